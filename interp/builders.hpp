@@ -1,0 +1,46 @@
+// The seam between the core evaluator (directives, expressions, macros: interp/evaluator*)
+// and the builders that turn flattened blocks into scene values (interp/build_*.cpp).
+#pragma once
+#include <functional>
+#include <string>
+
+#include "interp/value.hpp"
+#include "parser/diagnostics.hpp"
+
+namespace lumen::interp {
+
+// State the builders need from the evaluator.
+struct BuildContext {
+    double language_version = 3.62;  // #version in effect now
+    // #default { ... } settings; builders start new textures/pigments/finishes/normals from these.
+    scene::PigmentPtr default_pigment;  // null = POV default (black)
+    scene::FinishPtr default_finish;    // null = POV default finish
+    scene::NormalPtr default_normal;    // null = none
+    std::function<void(const Diagnostic&)> warn;  // may be empty
+};
+
+// True for block keywords that the builders turn into values. Reserved words that are not
+// supported give false: the evaluator then makes an Unsupported value without evaluating the
+// block's contents.
+bool is_supported_block(const std::string& keyword);
+
+// All block keywords lumen knows (supported or not), for "did you mean" suggestions.
+const std::vector<std::string>& known_block_keywords();
+
+// Builds a flattened block into a value: `sphere` -> ObjectPtr, `texture` -> TextureValue,
+// `pigment` -> PigmentPtr, ... Blocks that only mean something inside a parent (e.g.
+// `vertex_vectors`, `reflection`, `radiosity`) come back as the BlockValue itself.
+// Throws LumenError with the offending item's location.
+Value build_block(BuildContext& ctx, const BlockValue& block);
+
+// Applies one top-level item (an object, camera, light_source, global_settings, background,
+// fog, sky_sphere, ...) to the scene. Throws LumenError for items that cannot stand at top level.
+void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item);
+
+// #default { ... }
+void apply_default(BuildContext& ctx, const BlockValue& block);
+
+// After the whole file ran: final fix-ups and the list of unsupported features in use.
+void finish_scene(BuildContext& ctx, scene::Scene& scene);
+
+}  // namespace lumen::interp

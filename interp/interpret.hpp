@@ -1,0 +1,47 @@
+// Public entry point of the interpreter: .pov file -> scene::Scene.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "parser/diagnostics.hpp"
+#include "parser/source.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::interp {
+
+struct InterpOptions {
+    // Include search order (POV-Ray's): the scene's folder, then these (+L / Library_Path),
+    // then the installed POV-Ray include folder when `default_include_path` is set.
+    std::vector<std::string> library_paths;
+    bool default_include_path = true;
+    std::string system_include_dir = "/usr/share/povray-3.7/include";
+    // Declare=NAME=value: a float, or a string when quoted.
+    struct Declare { std::string name; std::optional<double> number; std::string text; };
+    std::vector<Declare> declares;
+    // Animation and image identifiers visible to the scene.
+    double clock = 0.0, clock_delta = 0.0, initial_clock = 0.0, final_clock = 1.0;
+    int initial_frame = 1, final_frame = 1, frame_number = 0;
+    int image_width = 320, image_height = 240;
+    bool clock_on = false;  // clock_on identifier
+    std::optional<double> version;  // +MV / Version=: initial #version
+    // Limits (errors, never crashes).
+    long long max_loop_iterations = 10'000'000;  // per #while / #for loop
+    int max_macro_depth = 200;
+    int max_include_depth = 64;
+};
+
+using WarningSink = std::function<void(const Diagnostic&)>;
+
+// Parses and evaluates `path`. Throws LumenError (with location and include chain) on the
+// first error. Warnings go to `warn` (may be empty: then they are dropped).
+scene::Scene interpret_file(SourceManager& sources, const std::string& path,
+                            const InterpOptions& options, const WarningSink& warn = {});
+
+// Same, from text already in memory (tests, fuzzing). `name` is used in messages.
+scene::Scene interpret_text(SourceManager& sources, const std::string& name,
+                            const std::string& text, const InterpOptions& options,
+                            const WarningSink& warn = {});
+
+}  // namespace lumen::interp

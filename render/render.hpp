@@ -1,0 +1,48 @@
+// Public entry point of the renderer: scene::Scene -> linear float image.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace lumen::render {
+
+struct RenderOptions {
+    int width = 800, height = 600;
+    bool antialias = false;
+    double aa_threshold = 0.3;
+    int aa_method = 1;        // +AM1 / +AM2
+    int aa_depth = 3;         // +R
+    bool jitter = true;       // +J / -J (only matters with +A)
+    double jitter_amount = 1.0;
+    double aa_gamma = 2.5;
+    int threads = 0;          // 0 = all cores
+    int block_size = 32;      // +BS
+    int quality = 9;          // +Q
+    // Partial render, 0-based inclusive pixel ranges (full image when -1).
+    int start_row = 0, end_row = -1, start_col = 0, end_col = -1;
+};
+
+// RGBFT per pixel in the scene's working colour space, unclipped (POV keeps floats until output).
+struct Image {
+    int width = 0, height = 0;
+    std::vector<float> pixels;  // 5 floats per pixel: r g b f t, row-major from the top
+    float* at(int x, int y) { return &pixels[(size_t(y) * width + x) * 5]; }
+    const float* at(int x, int y) const { return &pixels[(size_t(y) * width + x) * 5]; }
+};
+
+struct RenderStats {
+    uint64_t primary_rays = 0, total_rays = 0, shadow_rays = 0;
+    double seconds = 0;
+};
+
+// Progress callback: fraction done in [0,1]. Called from worker threads, serialised.
+using Progress = std::function<void(double)>;
+
+// Renders the scene. Throws LumenError if the scene uses something the renderer cannot draw
+// (with the location of the offending item).
+Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
+             const Progress& progress = {});
+
+}  // namespace lumen::render

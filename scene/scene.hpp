@@ -1,0 +1,73 @@
+// The evaluated scene: what the interpreter hands to the renderer. Plain data only.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "scene/light.hpp"
+#include "scene/object.hpp"
+
+namespace lumen::scene {
+
+struct RadiositySettings {
+    int count = 35, count_pool = 1600;
+    double error_bound = 1.8;
+    int recursion_limit = 2;
+    int nearest_count = 5;
+    double pretrace_start = 0.08, pretrace_end = 0.04;
+    double low_error_factor = 0.5, gray_threshold = 0.0;
+    double minimum_reuse = 0.015, maximum_reuse = 0.2;
+    double brightness = 1.0, adc_bailout = 0.01;
+    bool always_sample = false, normal = false, media = false;
+    double max_sample = -1;
+    SourceLoc loc;
+};
+
+struct GlobalSettings {
+    std::optional<double> assumed_gamma;
+    int max_trace_level = 5;
+    double adc_bailout = 1.0 / 255.0;
+    glm::dvec3 ambient_light{1, 1, 1};
+    glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};
+    int noise_generator = 2;
+    int number_of_waves = 10;
+    std::optional<RadiositySettings> radiosity;
+    std::vector<Unsupported> unsupported;  // photons, subsurface, ...
+};
+
+struct SkySphere {
+    std::vector<PigmentPtr> pigments;  // bottom first; the last is the top layer
+    Transform transform;
+    double emission = 1.0;
+    SourceLoc loc;
+};
+
+struct Fog {
+    int type = 1;                      // 1 constant, 2 ground fog
+    double distance = 0;
+    Colour colour;
+    glm::dvec3 turbulence{0};
+    double turb_depth = 0.5;
+    double offset = 0, alt = 0;
+    glm::dvec3 up{0, 1, 0};
+    Transform transform;
+    std::optional<Unsupported> unsupported;
+    SourceLoc loc;
+};
+
+struct Scene {
+    double language_version = 3.62;    // #version in effect at the end of parsing
+    bool version_given = false;        // a #version directive (or Version=) was seen
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<ObjectPtr> objects;
+    GlobalSettings globals;
+    Colour background{0, 0, 0, 0, 0};
+    std::optional<SkySphere> sky_sphere;
+    std::vector<Fog> fogs;
+    // Every unsupported feature that reached the scene, in source order (lumen --check).
+    std::vector<Unsupported> unsupported;
+};
+
+}  // namespace lumen::scene
