@@ -1,0 +1,36 @@
+// All the scene's objects behind one intersection interface (shapes, CSG, bounding, BVH).
+#pragma once
+#include <memory>
+
+#include "render/hit.hpp"
+#include "render/ray.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render {
+
+class Geometry {
+public:
+    // Builds the acceleration structure. Throws LumenError (with the object's location) for a
+    // shape the renderer cannot intersect.
+    explicit Geometry(const scene::Scene& scene);
+    ~Geometry();
+    Geometry(const Geometry&) = delete;
+    Geometry& operator=(const Geometry&) = delete;
+
+    // Nearest hit with t_min < t < t_max (POV ignores hits closer than 1e-4 for every ray:
+    // callers pass that as t_min). With `shadow` set, objects flagged no_shadow are skipped;
+    // otherwise objects flagged no_image are still hit (the tracer decides per ray kind).
+    // Thread-safe (const, no shared mutable state).
+    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow = false) const;
+
+    // True if world point p is inside `object` (used for media/fog decisions and tests).
+    static bool inside(const scene::Object& object, const glm::dvec3& p);
+
+    size_t primitive_count() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lumen::render

@@ -1,0 +1,27 @@
+// The nearest intersection found by Geometry, with everything shading needs resolved.
+#pragma once
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "scene/object.hpp"
+
+namespace lumen::render {
+
+struct Hit {
+    double t = 0;                 // distance along the (unit) ray
+    glm::dvec3 point{0};          // world-space hit point
+    glm::dvec3 normal{0, 1, 0};   // world-space unit normal, outward (already flipped for
+                                  // `inverse`), NOT yet flipped to face the ray; smooth
+                                  // triangles give the interpolated normal
+    glm::dvec2 uv{0};             // mesh uv where available
+    const scene::Object* object = nullptr;  // the primitive that was hit (flags, interior)
+    // The texture to shade with after CSG inheritance: the primitive's own, else the nearest
+    // CSG ancestor's; null means the default texture. For meshes, the triangle's texture.
+    const scene::LayeredTexture* texture = nullptr;
+    // Interior after inheritance (null = default interior). Its identity also tells which
+    // "inside" the ray enters or leaves (the interior list of povray-semantics.md §5.1).
+    const scene::Interior* interior = nullptr;
+    const void* interior_id = nullptr;  // stable identity of the interior owner (for lists)
+};
+
+}  // namespace lumen::render
