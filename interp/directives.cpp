@@ -1,0 +1,170 @@
+// Directives: #version #declare #local #undef #if #ifdef #ifndef #switch #while #for #break
+// #macro (definition) #default #debug #warning #error, and the refused file I/O directives.
+#include <cmath>
+
+#include "interp/conversions.hpp"
+#include "interp/evaluator.hpp"
+
+namespace lumen::interp {
+
+using ast::Kind;
+
+Flow Evaluator::run_directive(const ast::Node& n, std::vector<Item>& out) {
+    switch (n.kind) {
+        case Kind::Version:
+            ctx.language_version = eval_float(*n.children.at(0));
+            version_given = true;
+            return Flow::Normal;
+        case Kind::Include: include(n, out); return Flow::Normal;
+        case Kind::Declare: declare(n); return Flow::Normal;
+        case Kind::Undef:
+            if (!symbols.undef(n.text)) warn(n.loc, "#undef of '" + n.text + "', which is not declared");
+            return Flow::Normal;
+        case Kind::If: return run_if(n, out);
+        case Kind::Ifdef: return run_ifdef(n, out);
+        case Kind::Switch: return run_switch(n, out);
+        case Kind::Break:
+            if (breakable_ == 0) throw LumenError(n.loc, "#break outside #switch, #while, #for or a macro");
+            return Flow::Break;
+        case Kind::While: run_while(n, out); return Flow::Normal;
+        case Kind::For: run_for(n, out); return Flow::Normal;
+        case Kind::Macro:
+            symbols.declare(n.text, Value{std::make_shared<const MacroValue>(MacroValue{&n}), n.loc});
+            return Flow::Normal;
+        case Kind::Default: {
+            BlockValue block{"default", flatten_sealed(n.children), n.loc};
+            apply_default(ctx, block);
+            return Flow::Normal;
+        }
+        case Kind::Message: message(n); return Flow::Normal;
+        case Kind::FileIO:
+            throw LumenError(n.loc, "file I/O directive '#" + n.text + "' is not supported");
+        default:
+            throw LumenError(n.loc, std::string("unexpected ") + ast::kind_name(n.kind));
+    }
+}
+
+// The value of a #declare's right-hand side. Several texture blocks make a layered texture.
+Value Evaluator::declared_value(const ast::Node& n) {
+    if (n.children.size() < 2) throw LumenError(n.loc, "#" + n.text + " needs a value");
+    if (n.children.size() == 2) {
+        Value v = eval(*n.children[1]);
+        if (v.is<std::shared_ptr<ArrayValue>>())  // assignment copies an array
+            v.v = std::make_shared<ArrayValue>(*v.as<std::shared_ptr<ArrayValue>>());
+        if (v.is<std::monostate>()) throw LumenError(n.children[1]->loc, "this produces no value to #" + n.text);
+        return v;
+    }
+    auto layered = std::make_shared<TextureValue>();
+    for (size_t i = 1; i < n.children.size(); ++i) {
+        Value v = eval(*n.children[i]);
+        if (!v.is<std::shared_ptr<const TextureValue>>()) type_error(v, "a texture (only textures can be layered)");
+        const auto& layers = v.as<std::shared_ptr<const TextureValue>>()->layers;
+        layered->layers.insert(layered->layers.end(), layers.begin(), layers.end());
+    }
+    return Value{std::shared_ptr<const TextureValue>(std::move(layered)), n.children[1]->loc};
+}
+
+void Evaluator::declare(const ast::Node& n) {
+    bool local = n.text == "local";
+    const ast::Node& target = *n.children.at(0);
+    Value v = declared_value(n);
+    if (target.kind == Kind::Ident) {
+        if (local) symbols.local(target.text, std::move(v));
+        else symbols.declare(target.text, std::move(v));
+        return;
+    }
+    if (target.kind != Kind::Index) throw LumenError(target.loc, "expected an identifier to #" + n.text);
+    ArraySlot slot = array_slot(target);
+    slot.array->elems[slot.index] = std::move(v);
+}
+
+Flow Evaluator::run_if(const ast::Node& n, std::vector<Item>& out) {
+    for (const auto& branch : n.children) {
+        const ast::Node& cond = *branch->children.at(0);
+        if (cond.kind == Kind::Null || eval_condition(cond))
+            return run_item(*branch->children.at(1), out);
+    }
+    return Flow::Normal;
+}
+
+Flow Evaluator::run_ifdef(const ast::Node& n, std::vector<Item>& out) {
+    bool defined = is_defined(*n.children.at(0));
+    if (n.text == "ifndef") defined = !defined;
+    if (defined) return run_item(*n.children.at(1), out);
+    if (n.children.size() > 2) return run_item(*n.children[2]->children.at(1), out);
+    return Flow::Normal;
+}
+
+// POV's #switch falls through: once a clause matches, the following clause bodies run too
+// (whatever their conditions) until a #break or the #end (checked against POV-Ray 3.7).
+Flow Evaluator::run_switch(const ast::Node& n, std::vector<Item>& out) {
+    double selector = eval_float(*n.children.at(0));
+    bool matched = false;
+    ScopedSet inside(breakable_, breakable_ + 1);
+    for (size_t i = 1; i < n.children.size(); ++i) {
+        const ast::Node& clause = *n.children[i];
+        if (!matched) {
+            if (clause.kind == Kind::Case)
+                matched = std::fabs(selector - eval_float(*clause.children.at(0))) < kEpsilon;
+            else if (clause.kind == Kind::Range)
+                matched = selector >= eval_float(*clause.children.at(0)) &&
+                          selector <= eval_float(*clause.children.at(1));
+            else
+                matched = true;  // #else
+        }
+        if (matched && run_item(*clause.children.back(), out) == Flow::Break) break;
+    }
+    return Flow::Normal;
+}
+
+void Evaluator::loop_limit(long long& iterations, const ast::Node& node, const char* what) {
+    if (++iterations > options_.max_loop_iterations)
+        throw LumenError(node.loc, std::string(what) + " loop exceeded " +
+                                       std::to_string(options_.max_loop_iterations) + " iterations");
+}
+
+Flow Evaluator::run_loop_body(const ast::Node& body, std::vector<Item>& out) {
+    ScopedSet inside(breakable_, breakable_ + 1);
+    return run_item(body, out);
+}
+
+void Evaluator::run_while(const ast::Node& n, std::vector<Item>& out) {
+    long long iterations = 0;
+    while (eval_condition(*n.children.at(0))) {
+        loop_limit(iterations, n, "#while");
+        if (run_loop_body(*n.children.at(1), out) == Flow::Break) return;
+    }
+}
+
+// #for (I, start, end [, step]): I is a local; the body may change it (POV reads it back
+// each time), and the end test allows for rounding (0 to 0.3 step 0.1 runs 4 times).
+void Evaluator::run_for(const ast::Node& n, std::vector<Item>& out) {
+    double start = eval_float(*n.children.at(0));
+    double end = eval_float(*n.children.at(1));
+    const ast::Node& step_node = *n.children.at(2);
+    double step = step_node.kind == Kind::Null ? 1.0 : eval_float(step_node);
+    if (step == 0 || !std::isfinite(step)) throw LumenError(step_node.loc, "#for step must not be 0");
+    const std::string& var = n.text;
+    symbols.local(var, Value{start, n.loc});
+    long long iterations = 0;
+    for (;;) {
+        Value* cur = symbols.find(var);
+        if (!cur) throw LumenError(n.loc, "#for loop variable '" + var + "' was #undef'd");
+        double i = to_float(*cur);
+        if (step > 0 ? i > end + kEpsilon : i < end - kEpsilon) return;
+        loop_limit(iterations, n, "#for");
+        if (run_loop_body(*n.children.at(3), out) == Flow::Break) return;
+        cur = symbols.find(var);
+        if (!cur) throw LumenError(n.loc, "#for loop variable '" + var + "' was #undef'd");
+        *cur = Value{to_float(*cur) + step, n.loc};
+    }
+}
+
+void Evaluator::message(const ast::Node& n) {
+    Value v = eval(*n.children.at(0));
+    const std::string& text = to_string_value(v);
+    if (n.text == "error") throw LumenError(n.loc, text.empty() ? "#error" : text);
+    warn(n.loc, text, n.text == "warning" ? Severity::Warning : Severity::Note);
+}
+
+}  // namespace lumen::interp

@@ -1,0 +1,150 @@
+// The core SDL evaluator: runs directives, expands macros, evaluates expressions and flattens
+// block bodies into items (see value.hpp for the model). One Evaluator interprets one scene.
+//
+// The work is split by concept: flatten.cpp (items and blocks), expressions.cpp, builtins.cpp,
+// directives.cpp, macros.cpp, includes.cpp. Recursion follows the syntax tree, whose nesting
+// the parser bounds, plus macro calls and includes, which have their own depth limits.
+#pragma once
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "interp/builders.hpp"
+#include "interp/interpret.hpp"
+#include "interp/scope.hpp"
+#include "interp/value.hpp"
+
+namespace lumen::interp {
+
+// Sets a variable for the lifetime of the guard (depth counters, the #break permission).
+template <class T>
+class ScopedSet {
+public:
+    ScopedSet(T& ref, T value) : ref_(ref), saved_(ref) { ref_ = value; }
+    ~ScopedSet() { ref_ = saved_; }
+    ScopedSet(const ScopedSet&) = delete;
+    ScopedSet& operator=(const ScopedSet&) = delete;
+
+private:
+    T& ref_;
+    T saved_;
+};
+
+// A new symbol frame (macro call, include file) for the lifetime of the guard.
+class FrameGuard {
+public:
+    explicit FrameGuard(SymbolTable& s) : s_(s) { s_.push(); }
+    ~FrameGuard() { s_.pop(); }
+    FrameGuard(const FrameGuard&) = delete;
+    FrameGuard& operator=(const FrameGuard&) = delete;
+
+private:
+    SymbolTable& s_;
+};
+
+// How a directive body ended: normally, or unwinding a #break.
+enum class Flow { Normal, Break };
+
+class Evaluator {
+public:
+    Evaluator(SourceManager& sources, const InterpOptions& options, WarningSink warn);
+
+    // Runs a parsed main file (or text) at top level, handing each top-level item to `emit`
+    // as soon as its statement has run. Includes are searched in `file`'s folder first.
+    void run_main(const ast::Node& body, const SourceFile& file,
+                  const std::function<void(const Item&)>& emit);
+
+    // ---- items and blocks (flatten.cpp) ------------------------------------------------------
+    // Runs the items of a Body (or any node list), appending results to `out`.
+    Flow run_items(const std::vector<ast::NodePtr>& nodes, std::vector<Item>& out);
+    Flow run_item(const ast::Node& node, std::vector<Item>& out);
+    // A block body where #break cannot reach outside (blocks, includes, the main file).
+    std::vector<Item> flatten_sealed(const std::vector<ast::NodePtr>& nodes);
+    // `sphere { ... }` -> built value; function/spline -> FunctionValue; reserved but
+    // unsupported -> Unsupported; unknown word -> error.
+    Value eval_block(const ast::Node& block);
+
+    // ---- expressions (expressions.cpp) -------------------------------------------------------
+    Value eval(const ast::Node& expr);
+    double eval_float(const ast::Node& expr);
+    bool eval_condition(const ast::Node& expr);
+    Value lookup(const ast::Node& ident);  // identifier or built-in constant
+    // The array element an Index node names (bounds checked; may be uninitialised).
+    struct ArraySlot {
+        std::shared_ptr<ArrayValue> array;
+        size_t index;
+    };
+    ArraySlot array_slot(const ast::Node& index);
+
+    // ---- built-ins (builtins.cpp) ------------------------------------------------------------
+    std::optional<Value> builtin_constant(const std::string& name, SourceLoc loc) const;
+    static bool is_builtin_function(const std::string& name);
+    Value call_builtin(const ast::Node& call);
+    double new_rand_stream(double seed);          // seed()
+    double next_rand(const Value& stream);        // rand()
+    Value fold_range(const ast::Node& call, bool product);  // sum() / prod()
+    bool is_defined(const ast::Node& target);    // #ifdef, defined(): Ident or Index
+
+    // ---- directives (directives.cpp) ---------------------------------------------------------
+    Flow run_directive(const ast::Node& node, std::vector<Item>& out);
+
+    // ---- macros (macros.cpp) -----------------------------------------------------------------
+    // `call` is a Call node naming macro `m`. Items go to `out`.
+    void call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out);
+    // A macro call used as a value: must produce exactly one value item.
+    Value call_macro_value(const ast::Node& macro, const ast::Node& call);
+    // The Macro node a name refers to, or null.
+    const ast::Node* macro_named(const std::string& name);
+
+    // ---- includes (includes.cpp) -------------------------------------------------------------
+    void include(const ast::Node& directive, std::vector<Item>& out);
+    // Resolves an include name with POV's search order; empty if not found.
+    std::string find_include(const std::string& name) const;
+
+    void warn(SourceLoc loc, const std::string& message, Severity sev = Severity::Warning);
+
+    const InterpOptions& options() const { return options_; }
+    BuildContext ctx;
+    SymbolTable symbols;
+    bool version_given = false;
+
+private:
+    Value member(const ast::Node& e);
+    Value colour(const ast::Node& e);
+    Value array_decl(const ast::Node& e);
+    void fill_array(ArrayValue& arr, const ast::Node& init, size_t level, size_t& next);
+
+    void declare(const ast::Node& node);
+    Value declared_value(const ast::Node& node);
+    Flow run_if(const ast::Node& node, std::vector<Item>& out);
+    Flow run_ifdef(const ast::Node& node, std::vector<Item>& out);
+    Flow run_switch(const ast::Node& node, std::vector<Item>& out);
+    void run_while(const ast::Node& node, std::vector<Item>& out);
+    void run_for(const ast::Node& node, std::vector<Item>& out);
+    Flow run_loop_body(const ast::Node& body, std::vector<Item>& out);
+    void message(const ast::Node& node);
+    void loop_limit(long long& iterations, const ast::Node& node, const char* what);
+
+    const ast::Node& parse_macro_body(const ast::Node& macro);
+    const ast::Node& parse_file_cached(const std::string& path, SourceLoc from);
+
+    SourceManager& sources_;
+    const InterpOptions& options_;
+    WarningSink warn_;
+    std::string scene_dir_;
+    int macro_depth_ = 0;
+    int include_depth_ = 0;
+    int breakable_ = 0;  // > 0 inside #switch/#while/#for/macro bodies: #break is allowed
+    std::vector<uint32_t> rand_streams_;  // seed() streams, indexed by the value seed() returns
+    // Parsed trees stay alive for the whole run: MacroValue/FunctionValue point into them.
+    std::vector<ast::NodePtr> trees_;
+    std::map<std::string, const ast::Node*> file_cache_;
+    std::map<const ast::Node*, const ast::Node*> macro_cache_;
+};
+
+// Runs a parser entry point, turning its ParseError into a LumenError (location and hint kept).
+ast::NodePtr parse_or_throw(const std::function<ast::NodePtr()>& parse);
+
+}  // namespace lumen::interp

@@ -1,0 +1,130 @@
+// Flattening block bodies into items: the heart of the evaluation model (value.hpp).
+#include <algorithm>
+
+#include "interp/evaluator.hpp"
+#include "parser/parser.hpp"
+
+namespace lumen::interp {
+
+using ast::Kind;
+
+Evaluator::Evaluator(SourceManager& sources, const InterpOptions& options, WarningSink warn)
+    : sources_(sources), options_(options), warn_(std::move(warn)) {
+    ctx.warn = warn_;
+    if (options_.version) {
+        ctx.language_version = *options_.version;
+        version_given = true;
+    }
+}
+
+void Evaluator::warn(SourceLoc loc, const std::string& message, Severity sev) {
+    if (warn_) warn_(Diagnostic{sev, loc, message, {}, {}});
+}
+
+void Evaluator::run_main(const ast::Node& body, const SourceFile& file,
+                         const std::function<void(const Item&)>& emit) {
+    size_t slash = file.name.rfind('/');
+    scene_dir_ = slash == std::string::npos ? "." : file.name.substr(0, std::max<size_t>(slash, 1));
+    ScopedSet sealed(breakable_, 0);
+    std::vector<Item> items;
+    for (const ast::NodePtr& n : body.children) {
+        run_item(*n, items);
+        for (const Item& it : items) emit(it);
+        items.clear();
+    }
+}
+
+std::vector<Item> Evaluator::flatten_sealed(const std::vector<ast::NodePtr>& nodes) {
+    std::vector<Item> out;
+    ScopedSet sealed(breakable_, 0);
+    run_items(nodes, out);
+    return out;
+}
+
+Flow Evaluator::run_items(const std::vector<ast::NodePtr>& nodes, std::vector<Item>& out) {
+    for (const ast::NodePtr& n : nodes)
+        if (run_item(*n, out) == Flow::Break) return Flow::Break;
+    return Flow::Normal;
+}
+
+namespace {
+
+Item value_item(Value v, SourceLoc loc) {
+    Item it;
+    it.kind = Item::Kind::Value;
+    it.value = std::move(v);
+    it.loc = loc;
+    return it;
+}
+
+}  // namespace
+
+Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
+    switch (node.kind) {
+        case Kind::Keyword: {
+            Item it;
+            it.kind = Item::Kind::Keyword;
+            it.keyword = node.text;
+            it.loc = node.loc;
+            out.push_back(std::move(it));
+            return Flow::Normal;
+        }
+        case Kind::Comma: {
+            Item it;
+            it.kind = Item::Kind::Comma;
+            it.loc = node.loc;
+            out.push_back(std::move(it));
+            return Flow::Normal;
+        }
+        case Kind::Semicolon:
+        case Kind::Null:
+            return Flow::Normal;
+        case Kind::MapEntry: {
+            Item it;
+            it.kind = Item::Kind::MapEntry;
+            it.loc = node.loc;
+            it.entry = flatten_sealed(node.children);
+            out.push_back(std::move(it));
+            return Flow::Normal;
+        }
+        case Kind::Body:
+            return run_items(node.children, out);
+        case Kind::Call:
+            // A macro call at item level splices its items in place.
+            if (const ast::Node* m = macro_named(node.text)) {
+                call_macro(*m, node, out);
+                return Flow::Normal;
+            }
+            out.push_back(value_item(eval(node), node.loc));
+            return Flow::Normal;
+        case Kind::Number: case Kind::String: case Kind::Ident: case Kind::Vector:
+        case Kind::Unary: case Kind::Binary: case Kind::Ternary: case Kind::Member:
+        case Kind::Index: case Kind::Colour: case Kind::ArrayDecl: case Kind::Block: {
+            Value v = eval(node);
+            out.push_back(value_item(std::move(v), node.loc));
+            return Flow::Normal;
+        }
+        case Kind::ColourPart: case Kind::ArrayInit: case Kind::Branch: case Kind::Case:
+        case Kind::Range:
+            throw LumenError(node.loc, std::string("unexpected ") + ast::kind_name(node.kind));
+        default:
+            return run_directive(node, out);
+    }
+}
+
+Value Evaluator::eval_block(const ast::Node& block) {
+    const std::string& kw = block.text;
+    if (kw == "function" || kw == "spline" || !block.params.empty())
+        return Value{std::make_shared<const FunctionValue>(FunctionValue{&block, kw}), block.loc};
+    if (!is_supported_block(kw)) {
+        if (parser::is_reserved_word(kw)) return Value{scene::Unsupported{kw, block.loc}, block.loc};
+        throw LumenError(block.loc, "unknown keyword '" + kw + "'",
+                         did_you_mean(kw, known_block_keywords()));
+    }
+    BlockValue bv{kw, flatten_sealed(block.children), block.loc};
+    Value v = build_block(ctx, bv);
+    if (v.loc.line == 0) v.loc = block.loc;
+    return v;
+}
+
+}  // namespace lumen::interp

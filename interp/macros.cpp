@@ -1,0 +1,86 @@
+// Macro calls. A macro body is parsed on first use (parse_fragment) and cached per Macro node.
+// Arguments bind as #locals in a new frame; an argument written as a plain identifier is
+// passed by reference: the parameter's final value is copied back to it (POV-Ray 3.7 does
+// this even for `#local Param = ...`).
+#include "interp/evaluator.hpp"
+#include "parser/parser.hpp"
+
+namespace lumen::interp {
+
+ast::NodePtr parse_or_throw(const std::function<ast::NodePtr()>& parse) {
+    try {
+        return parse();
+    } catch (const parser::ParseError& e) {
+        throw LumenError(e.loc, e.what(), e.hint);
+    }
+}
+
+const ast::Node* Evaluator::macro_named(const std::string& name) {
+    Value* v = symbols.find(name);
+    if (!v || !v->is<std::shared_ptr<const MacroValue>>()) return nullptr;
+    return v->as<std::shared_ptr<const MacroValue>>()->node;
+}
+
+const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
+    if (auto it = macro_cache_.find(&macro); it != macro_cache_.end()) return *it->second;
+    const SourceFile& file = *macro.loc.file;
+    trees_.push_back(parse_or_throw(
+        [&] { return parser::parse_fragment(file, macro.raw_begin, macro.raw_end, macro.raw_loc); }));
+    macro_cache_[&macro] = trees_.back().get();
+    return *trees_.back();
+}
+
+void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out) {
+    const auto& params = macro.params;
+    size_t given = call.children.size();
+    if (given > params.size())
+        throw LumenError(call.loc, "macro '" + macro.text + "' expects " + std::to_string(params.size()) +
+                                       " argument(s), found " + std::to_string(given));
+    for (size_t i = given; i < params.size(); ++i)
+        if (i >= macro.optional_params.size() || !macro.optional_params[i])
+            throw LumenError(call.loc, "macro '" + macro.text + "' needs a value for parameter '" +
+                                           params[i] + "'");
+    if (macro_depth_ >= options_.max_macro_depth)
+        throw LumenError(call.loc, "macro '" + macro.text + "' nested more than " +
+                                       std::to_string(options_.max_macro_depth) + " calls deep");
+    const ast::Node& body = parse_macro_body(macro);
+
+    // Arguments are evaluated in the caller's scope, before the new frame exists.
+    std::vector<Value> args;
+    struct Reference { size_t param; std::string name; size_t frame; };
+    std::vector<Reference> refs;
+    for (size_t i = 0; i < given; ++i) {
+        const ast::Node& a = *call.children[i];
+        args.push_back(eval(a));
+        if (a.kind == ast::Kind::Ident && symbols.find(a.text))
+            refs.push_back({i, a.text, symbols.frame_of(a.text)});
+    }
+
+    ScopedSet depth(macro_depth_, macro_depth_ + 1);
+    ScopedSet inside(breakable_, 1);  // #break ends the macro
+    std::vector<std::pair<Reference, Value>> results;
+    {
+        FrameGuard frame(symbols);
+        for (size_t i = 0; i < given; ++i) symbols.local(params[i], std::move(args[i]));
+        run_items(body.children, out);
+        for (const Reference& r : refs) {
+            const std::string& p = params[r.param];
+            if (symbols.frame_of(p) == symbols.depth() - 1) results.push_back({r, *symbols.find(p)});
+        }
+    }
+    // Copy by-reference parameters back into the caller's variables.
+    for (auto& [r, v] : results)
+        if (r.frame < symbols.depth()) symbols.set_in_frame(r.frame, r.name, std::move(v));
+}
+
+Value Evaluator::call_macro_value(const ast::Node& macro, const ast::Node& call) {
+    std::vector<Item> items;
+    call_macro(macro, call, items);
+    if (items.size() != 1 || items[0].kind != Item::Kind::Value)
+        throw LumenError(call.loc, "macro '" + macro.text + "' used in an expression produced " +
+                                       std::to_string(items.size()) + " items");
+    Value v = std::move(items[0].value);
+    return v;
+}
+
+}  // namespace lumen::interp
