@@ -1,0 +1,97 @@
+// Geometry: the compiled nodes of the whole scene, a BVH over the bounded top-level nodes and
+// a list of unbounded ones (planes, inverse shapes) that every ray tests.
+#include "render/geometry.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "render/bvh.hpp"
+#include "render/node.hpp"
+
+namespace lumen::render {
+
+struct Geometry::Impl {
+    NodeStore store;
+    std::vector<uint32_t> bounded;    // roots in BVH order
+    std::vector<uint32_t> unbounded;  // roots tested by every ray
+    Bvh bvh;
+    size_t primitives = 0;
+};
+
+Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
+    NodeStore& store = impl_->store;
+    std::vector<uint32_t> roots;
+    for (const auto& object : scene.objects)
+        if (object) compile_top_level(store, *object, roots);
+    std::vector<Aabb> boxes;
+    std::vector<uint32_t> finite;
+    for (uint32_t r : roots) {
+        impl_->primitives += count_primitives(store, r);
+        const Aabb& box = store.nodes[r].surface;
+        if (box.empty()) continue;  // can never be hit
+        if (box.finite()) {
+            boxes.push_back(box);
+            finite.push_back(r);
+        } else {
+            impl_->unbounded.push_back(r);
+        }
+    }
+    impl_->bvh.build(boxes, 2);
+    for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(finite[i]);
+}
+
+Geometry::~Geometry() = default;
+
+size_t Geometry::primitive_count() const { return impl_->primitives; }
+
+bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow) const {
+    const NodeStore& store = impl_->store;
+    NodeHit best;
+    bool found = false;
+    double best_t = t_max;
+    uint32_t best_root = std::numeric_limits<uint32_t>::max();
+    // Limit for the next candidate: hits at exactly best_t still compete, and the earlier
+    // object in scene order wins, so coincident surfaces resolve the same way on every ray.
+    auto limit = [&] { return found ? std::nextafter(best_t, Aabb::inf) : best_t; };
+    auto test = [&](uint32_t root) {
+        NodeHit h;
+        if (!intersect_node(store, root, ray, t_min, limit(), shadow, h)) return;
+        if (h.shape.t < best_t || (h.shape.t == best_t && root < best_root) || !found) {
+            best = h;
+            best_t = h.shape.t;
+            best_root = root;
+            found = true;
+        }
+    };
+    for (uint32_t r : impl_->unbounded) test(r);
+    double prune = limit();
+    impl_->bvh.traverse(SlabRay(ray.origin, ray.dir), t_min, prune, [&](uint32_t i) {
+        test(impl_->bounded[i]);
+        prune = limit();
+    });
+    if (!found) return false;
+
+    const Node& leaf = store.nodes[best.leaf];
+    hit.t = best_t;
+    hit.point = ray.at(best_t);
+    glm::dvec3 n = leaf.identity ? best.shape.normal : leaf.xf.normal(best.shape.normal);
+    double len = glm::length(n);
+    n = len > 0 && std::isfinite(len) ? n / len : glm::dvec3(0, 1, 0);
+    hit.normal = leaf.flip ? -n : n;
+    hit.uv = best.shape.uv;
+    hit.object = leaf.object;
+    hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
+    hit.interior = leaf.interior;
+    hit.interior_id = leaf.object;
+    return true;
+}
+
+bool Geometry::inside(const scene::Object& object, const glm::dvec3& p) {
+    NodeStore store;
+    uint32_t root = compile_object(store, object, NodeContext{}, false);
+    return inside_node(store, root, p);
+}
+
+}  // namespace lumen::render

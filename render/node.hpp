@@ -1,0 +1,87 @@
+// The scene's objects compiled for tracing: a flat array of nodes (primitives and CSG
+// operations) with transforms composed down to world space, inherited textures, interiors and
+// no_shadow resolved per node, and surface/solid bounds for culling.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <variant>
+#include <vector>
+
+#include "render/bounds.hpp"
+#include "render/ray.hpp"
+#include "render/shapes.hpp"
+#include "scene/object.hpp"
+
+namespace lumen::render {
+
+// Difference {A B C} compiles to Intersection {A, inverse B, inverse C}.
+enum class NodeKind : uint8_t { Shape, Union, Merge, Intersection };
+
+using ShapeData = std::variant<SphereShape, PlaneShape, BoxShape, ConeShape, TorusShape,
+                               DiscShape, TriangleShape, PolygonShape, std::unique_ptr<MeshShape>>;
+
+struct Node {
+    NodeKind kind = NodeKind::Shape;
+    bool identity = true;    // xf is the identity (skip transforming rays)
+    bool inverse = false;    // inside/outside swapped (own `inverse` or subtracted)
+    bool flip = false;       // normal flipped: odd number of inverses from the root down
+    bool no_shadow = false;  // own or inherited from a CSG ancestor
+    double min_depth = kDepthDefault;
+    scene::Transform xf;     // object -> world, ancestors included
+    Aabb surface;            // world box of the points a hit can be at
+    Aabb solid;              // world box of the points that can be inside
+    uint32_t shape = 0;      // index into NodeStore::shapes (Shape nodes)
+    uint32_t children = 0, child_count = 0;  // ranges in NodeStore::links
+    uint32_t clips = 0, clip_count = 0;
+    uint32_t bounds = 0, bound_count = 0;
+    const scene::Object* object = nullptr;   // the source object
+    const scene::LayeredTexture* texture = nullptr;  // after inheritance; null = default
+    const scene::Interior* interior = nullptr;       // after inheritance; null = default
+};
+
+struct NodeStore {
+    std::vector<Node> nodes;
+    std::vector<uint32_t> links;
+    std::vector<ShapeData> shapes;
+};
+
+// CSG nesting deeper than this is refused (keeps every recursion bounded).
+constexpr int kMaxNesting = 1000;
+
+// What the compiler inherits from enclosing objects.
+struct NodeContext {
+    scene::Transform to_world;                  // the parent's object -> world
+    const scene::LayeredTexture* texture = nullptr;
+    const scene::Interior* interior = nullptr;
+    bool no_shadow = false, invert = false, flip = false;
+    std::vector<uint32_t> clips;                // clip nodes pushed down from flattened unions
+    std::vector<uint32_t> bounds;               // bounded_by nodes pushed down likewise
+    int depth = 0;
+};
+
+// Compiles `object` (and its children, clips and bounds) into `store`; returns its node.
+// `accelerate` = false skips building mesh BVHs. Throws LumenError for unsupported shapes.
+uint32_t compile_object(NodeStore& store, const scene::Object& object, const NodeContext& ctx,
+                        bool accelerate = true);
+
+// Top-level form: unions (not merges) are flattened into their children, with inverse, clips,
+// bounds and inherited attributes pushed down, so the BVH sees every primitive. Appends roots.
+void compile_top_level(NodeStore& store, const scene::Object& object,
+                       std::vector<uint32_t>& roots);
+
+// The nearest accepted hit of a node: which leaf, and the shape's own report.
+struct NodeHit {
+    ShapeHit shape;
+    uint32_t leaf = 0;
+};
+
+// Nearest hit of node `index` with tmin < t < tmax on the world ray.
+bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
+                    double tmax, bool shadow, NodeHit& hit);
+// Whether world point p is inside node `index` (inverse, CSG and clipped_by applied).
+bool inside_node(const NodeStore& store, uint32_t index, const glm::dvec3& p);
+
+// Number of primitive shapes under a node (meshes count their triangles).
+size_t count_primitives(const NodeStore& store, uint32_t index);
+
+}  // namespace lumen::render

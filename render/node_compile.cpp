@@ -1,0 +1,207 @@
+// Turns scene objects into nodes: composes transforms, resolves inheritance (texture,
+// interior, no_shadow, inverse parity) and computes the boxes used for culling.
+#include <cmath>
+#include <type_traits>
+
+#include "parser/diagnostics.hpp"
+#include "render/node.hpp"
+
+namespace lumen::render {
+
+namespace {
+
+// A hair wider than exact, so rounding in the corner transforms never culls a real hit.
+Aabb padded(Aabb b) {
+    if (b.empty() || !b.finite()) return b;
+    glm::dvec3 pad = 1e-9 * (1.0 + glm::max(glm::abs(b.lo), glm::abs(b.hi)));
+    return {b.lo - pad, b.hi + pad};
+}
+
+template <class S>
+constexpr bool has_inside = requires(const S& s, const glm::dvec3& p) { inside(s, p); };
+
+double min_depth_of(const ShapeData& d) {
+    if (std::holds_alternative<TorusShape>(d)) return kDepthTorus;
+    if (std::holds_alternative<PolygonShape>(d)) return kDepthPolygon;
+    return kDepthDefault;
+}
+
+// The prepared shape of a primitive; false for CSG.
+bool make_shape(const scene::Shape& shape, bool accelerate, ShapeData& out) {
+    if (auto* s = std::get_if<scene::Sphere>(&shape)) out = make_sphere(*s);
+    else if (auto* s = std::get_if<scene::Plane>(&shape)) out = make_plane(*s);
+    else if (auto* s = std::get_if<scene::Box>(&shape)) out = make_box(*s);
+    else if (auto* s = std::get_if<scene::Cylinder>(&shape)) out = make_cylinder(*s);
+    else if (auto* s = std::get_if<scene::Cone>(&shape)) out = make_cone(*s);
+    else if (auto* s = std::get_if<scene::Torus>(&shape)) out = make_torus(*s);
+    else if (auto* s = std::get_if<scene::Disc>(&shape)) out = make_disc(*s);
+    else if (auto* s = std::get_if<scene::Triangle>(&shape)) out = make_triangle(*s);
+    else if (auto* s = std::get_if<scene::Polygon>(&shape)) out = make_polygon(*s);
+    else if (auto* s = std::get_if<scene::Mesh>(&shape)) out = make_mesh(*s, accelerate);
+    else return false;
+    return true;
+}
+
+// Object-space boxes of a shape: where it can be hit, and where it can be inside.
+void shape_boxes(const ShapeData& d, Aabb& surface, Aabb& solid) {
+    std::visit(
+        [&](const auto& s) {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, std::unique_ptr<MeshShape>>) {
+                surface = bounds(*s);
+                solid = s->mesh->inside_vector ? surface : Aabb{};
+            } else {
+                surface = bounds(s);
+                solid = has_inside<S> ? surface : Aabb{};
+            }
+        },
+        d);
+}
+
+bool transform_is_finite(const scene::Transform& xf) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(xf.m[c][r]) || !std::isfinite(xf.inv[c][r])) return false;
+    return true;
+}
+
+uint32_t append_links(NodeStore& store, const std::vector<uint32_t>& items) {
+    auto first = uint32_t(store.links.size());
+    store.links.insert(store.links.end(), items.begin(), items.end());
+    return first;
+}
+
+// Compiles clipped_by / bounded_by objects: they are already in the object's parent space.
+std::vector<uint32_t> compile_helpers(NodeStore& store, const std::vector<scene::ObjectPtr>& objs,
+                                      const NodeContext& ctx, bool accelerate,
+                                      std::vector<uint32_t> inherited) {
+    NodeContext plain;
+    plain.to_world = ctx.to_world;
+    plain.depth = ctx.depth + 1;
+    for (const auto& o : objs)
+        if (o) inherited.push_back(compile_object(store, *o, plain, accelerate));
+    return inherited;
+}
+
+}  // namespace
+
+uint32_t compile_object(NodeStore& store, const scene::Object& object, const NodeContext& ctx,
+                        bool accelerate) {
+    if (ctx.depth > kMaxNesting)
+        throw LumenError(object.loc, "objects are nested too deeply (more than " +
+                                         std::to_string(kMaxNesting) + " levels)");
+    if (auto* u = std::get_if<scene::UnsupportedShape>(&object.shape))
+        throw LumenError(u->what.loc.line ? u->what.loc : object.loc,
+                         "'" + u->what.feature + "' is not supported yet");
+
+    Node node;
+    node.object = &object;
+    node.xf = object.transform.then(ctx.to_world);
+    node.identity = node.xf.is_identity();
+    node.inverse = object.inverse != ctx.invert;
+    node.flip = ctx.flip != node.inverse;
+    node.no_shadow = ctx.no_shadow || object.no_shadow;
+    node.texture = object.texture.empty() ? ctx.texture : &object.texture;
+    node.interior = object.interior ? &*object.interior : ctx.interior;
+
+    std::vector<uint32_t> clips = compile_helpers(store, object.clipped_by, ctx, accelerate, ctx.clips);
+    std::vector<uint32_t> bounds = compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
+
+    if (auto* csg = std::get_if<scene::Csg>(&object.shape)) {
+        node.kind = csg->op == scene::CsgOp::Union ? NodeKind::Union
+                    : csg->op == scene::CsgOp::Merge ? NodeKind::Merge
+                                                     : NodeKind::Intersection;
+        NodeContext inner;
+        inner.to_world = node.xf;
+        inner.texture = node.texture;
+        inner.interior = node.interior;
+        inner.no_shadow = node.no_shadow;
+        inner.flip = node.flip;
+        inner.depth = ctx.depth + 1;
+        std::vector<uint32_t> kids;
+        Aabb surface, solid = node.kind == NodeKind::Intersection ? Aabb::everything() : Aabb{};
+        for (size_t i = 0; i < csg->children.size(); ++i) {
+            if (!csg->children[i]) continue;
+            inner.invert = csg->op == scene::CsgOp::Difference && i > 0;
+            uint32_t k = compile_object(store, *csg->children[i], inner, accelerate);
+            kids.push_back(k);
+            const Node& child = store.nodes[k];
+            surface.expand(child.surface);
+            if (node.kind == NodeKind::Intersection) solid = intersect(solid, child.solid);
+            else solid.expand(child.solid);
+        }
+        if (node.kind == NodeKind::Intersection) surface = intersect(surface, solid);
+        if (kids.empty()) solid = surface = Aabb{};
+        node.surface = surface;
+        node.solid = solid;
+        node.children = append_links(store, kids);
+        node.child_count = uint32_t(kids.size());
+    } else {
+        ShapeData data;
+        make_shape(object.shape, accelerate, data);
+        node.min_depth = min_depth_of(data);
+        Aabb surface, solid;
+        shape_boxes(data, surface, solid);
+        if (!transform_is_finite(node.xf)) surface = solid = Aabb{};  // singular: never hit
+        node.surface = padded(transformed(surface, node.xf));
+        node.solid = padded(transformed(solid, node.xf));
+        node.shape = uint32_t(store.shapes.size());
+        store.shapes.push_back(std::move(data));
+    }
+    if (node.inverse) node.solid = Aabb::everything();
+    for (uint32_t c : clips) {
+        node.surface = intersect(node.surface, store.nodes[c].solid);
+        node.solid = intersect(node.solid, store.nodes[c].solid);
+    }
+    node.clips = append_links(store, clips);
+    node.clip_count = uint32_t(clips.size());
+    node.bounds = append_links(store, bounds);
+    node.bound_count = uint32_t(bounds.size());
+    store.nodes.push_back(std::move(node));
+    return uint32_t(store.nodes.size() - 1);
+}
+
+void compile_top_level(NodeStore& store, const scene::Object& object,
+                       std::vector<uint32_t>& roots) {
+    // Explicit stack: unions nested thousands deep (loops building unions) stay flat.
+    struct Item { const scene::Object* object; NodeContext ctx; };
+    std::vector<Item> stack;
+    stack.push_back({&object, NodeContext{}});
+    while (!stack.empty()) {
+        Item item = std::move(stack.back());
+        stack.pop_back();
+        const scene::Object& o = *item.object;
+        auto* csg = std::get_if<scene::Csg>(&o.shape);
+        if (!csg || csg->op != scene::CsgOp::Union) {
+            roots.push_back(compile_object(store, o, item.ctx));
+            continue;
+        }
+        const NodeContext& ctx = item.ctx;
+        NodeContext inner;
+        inner.to_world = o.transform.then(ctx.to_world);
+        inner.invert = o.inverse != ctx.invert;  // reaches the leaves' `inverse` (and flip)
+        inner.flip = ctx.flip;
+        inner.no_shadow = ctx.no_shadow || o.no_shadow;
+        inner.texture = o.texture.empty() ? ctx.texture : &o.texture;
+        inner.interior = o.interior ? &*o.interior : ctx.interior;
+        inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
+        inner.bounds = compile_helpers(store, o.bounded_by, ctx, true, ctx.bounds);
+        for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
+            if (*it) stack.push_back({it->get(), inner});
+    }
+}
+
+size_t count_primitives(const NodeStore& store, uint32_t index) {
+    const Node& n = store.nodes[index];
+    if (n.kind != NodeKind::Shape) {
+        size_t total = 0;
+        for (uint32_t i = 0; i < n.child_count; ++i)
+            total += count_primitives(store, store.links[n.children + i]);
+        return total;
+    }
+    if (auto* mesh = std::get_if<std::unique_ptr<MeshShape>>(&store.shapes[n.shape]))
+        return (*mesh)->tris.size();
+    return 1;
+}
+
+}  // namespace lumen::render

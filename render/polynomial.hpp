@@ -1,0 +1,20 @@
+// Real roots of low-degree polynomials, robust enough for grazing rays (torus quartic).
+#pragma once
+
+namespace lumen::render {
+
+// Roots of a*t^2 + 2*b_half*t + c = 0 with the cancellation-free formula; returns how many
+// (0..2), ascending. A double root is returned once.
+int solve_quadratic(double a, double b_half, double c, double roots[2]);
+
+// Evaluates c[0] + c[1] t + ... + c[n] t^n (coefficients lowest power first).
+double eval_poly(const double* c, int n, double t);
+
+// Every real root of the degree-n polynomial (lowest power first, n <= 8) in [lo, hi],
+// ascending. Roots are isolated between the roots of the derivative (found recursively), so
+// each bracket is monotone and is refined by safeguarded Newton; this never misses a simple
+// root and never returns NaN. A tangent (double) root counts only if the polynomial is 0 or
+// changes sign there. Returns the count (<= n).
+int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots);
+
+}  // namespace lumen::render

@@ -1,0 +1,47 @@
+// Box: slab test (zero direction components handled by SlabRay), the face normal from the
+// slab that gave the entry or exit.
+#include <cmath>
+
+#include "render/shapes.hpp"
+
+namespace lumen::render {
+
+BoxShape make_box(const scene::Box& b) {
+    BoxShape out{{glm::min(b.min, b.max), glm::max(b.min, b.max)}, true};
+    out.valid = out.box.finite();
+    return out;
+}
+
+bool intersect(const BoxShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    if (!s.valid) return false;
+    SlabRay slab(r.o, r.d);
+    double enter = -Aabb::inf, exit = Aabb::inf;
+    int enter_axis = 0, exit_axis = 0;
+    for (int i = 0; i < 3; ++i) {
+        double a = (s.box.lo[i] - r.o[i]) * slab.inv_dir[i];
+        double c = (s.box.hi[i] - r.o[i]) * slab.inv_dir[i];
+        if (a > c) std::swap(a, c);
+        if (a > enter) { enter = a; enter_axis = i; }
+        if (c < exit) { exit = c; exit_axis = i; }
+    }
+    if (!(enter <= exit)) return false;
+    double t;
+    int axis;
+    if (enter > tmin) { t = enter; axis = enter_axis; }
+    else { t = exit; axis = exit_axis; }
+    if (!(t > tmin && t < tmax)) return false;
+    h.t = t;
+    h.normal = glm::dvec3(0);
+    // Entering faces the ray (normal against d); leaving, along d.
+    double sign = (t == enter) == (r.d[axis] > 0) ? -1.0 : 1.0;
+    h.normal[axis] = sign;
+    return true;
+}
+
+bool inside(const BoxShape& s, const glm::dvec3& p) {
+    return s.valid && s.box.contains(p);
+}
+
+Aabb bounds(const BoxShape& s) { return s.valid ? s.box : Aabb{}; }
+
+}  // namespace lumen::render

@@ -1,0 +1,119 @@
+// mesh / mesh2: triangles in a per-mesh BVH; per-face textures and smooth normals are looked
+// up from the source mesh only for the final hit. Inside only with inside_vector: the parity
+// of the surface crossings along it.
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "render/shapes.hpp"
+
+namespace lumen::render {
+
+namespace {
+
+bool valid_index(int i, size_t size) { return i >= 0 && size_t(i) < size; }
+
+// Calls visit(position) for every triangle whose BVH leaf the ray reaches (all of them when
+// the mesh was built without a BVH).
+template <class Visit>
+void for_candidates(const MeshShape& s, const LocalRay& r, double tmin, double& tmax,
+                    Visit&& visit) {
+    if (s.bvh.empty()) {
+        for (uint32_t i = 0; i < s.tris.size(); ++i) visit(i);
+        return;
+    }
+    s.bvh.traverse(SlabRay(r.o, r.d), tmin, tmax, visit);
+}
+
+}  // namespace
+
+std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
+    auto out = std::make_unique<MeshShape>();
+    out->mesh = &m;
+    std::vector<TriangleCore> tris;
+    std::vector<uint32_t> faces;
+    std::vector<Aabb> boxes;
+    for (size_t f = 0; f < m.faces.size(); ++f) {
+        const auto& v = m.faces[f].v;
+        if (!valid_index(v[0], m.vertices.size()) || !valid_index(v[1], m.vertices.size()) ||
+            !valid_index(v[2], m.vertices.size()))
+            continue;
+        TriangleCore tri;
+        if (!make_triangle_core(m.vertices[v[0]], m.vertices[v[1]], m.vertices[v[2]], tri))
+            continue;  // degenerate faces are skipped
+        Aabb box;
+        for (int i = 0; i < 3; ++i) box.expand(m.vertices[v[i]]);
+        tris.push_back(tri);
+        faces.push_back(uint32_t(f));
+        boxes.push_back(box);
+        out->box.expand(box);
+    }
+    out->valid = !tris.empty();
+    if (accelerate && !tris.empty()) {
+        out->bvh.build(boxes, 4);
+        out->tris.reserve(tris.size());
+        out->face.reserve(tris.size());
+        for (uint32_t i : out->bvh.order()) {
+            out->tris.push_back(tris[i]);
+            out->face.push_back(faces[i]);
+        }
+    } else {
+        out->tris = std::move(tris);
+        out->face = std::move(faces);
+    }
+    return out;
+}
+
+bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    if (!s.valid) return false;
+    int best = -1;
+    double best_u = 0, best_v = 0;
+    for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
+        double t, u, v;
+        if (hit_triangle(s.tris[i], r, tmin, tmax, t, u, v)) {
+            tmax = t;  // prunes the rest of the traversal
+            best = int(i);
+            best_u = u;
+            best_v = v;
+        }
+    });
+    if (best < 0) return false;
+    const scene::Mesh& m = *s.mesh;
+    const scene::Mesh::Face& face = m.faces[s.face[best]];
+    const TriangleCore& tri = s.tris[best];
+    glm::dvec3 flat = glm::normalize(glm::cross(tri.e1, tri.e2));
+    h.t = tmax;
+    h.normal = flat;
+    if (valid_index(face.n[0], m.normals.size()) && valid_index(face.n[1], m.normals.size()) &&
+        valid_index(face.n[2], m.normals.size())) {
+        std::array<glm::dvec3, 3> n;
+        for (int i = 0; i < 3; ++i) {
+            double len = glm::length(m.normals[face.n[i]]);
+            n[i] = len > 0 && std::isfinite(len) ? m.normals[face.n[i]] / len : flat;
+        }
+        h.normal = blend_normals(n, flat, best_u, best_v);
+    }
+    h.uv = {best_u, best_v};
+    if (!m.uvs.empty() && m.uvs.size() == m.vertices.size())
+        h.uv = (1 - best_u - best_v) * m.uvs[face.v[0]] + best_u * m.uvs[face.v[1]] +
+               best_v * m.uvs[face.v[2]];
+    h.texture = valid_index(face.tex[0], m.textures.size()) ? &m.textures[face.tex[0]] : nullptr;
+    return true;
+}
+
+bool inside(const MeshShape& s, const glm::dvec3& p) {
+    if (!s.valid || !s.mesh->inside_vector || !s.box.contains(p)) return false;
+    LocalRay r{p, *s.mesh->inside_vector};
+    if (r.d == glm::dvec3(0)) return false;
+    double tmax = Aabb::inf;
+    int crossings = 0;
+    for_candidates(s, r, 0.0, tmax, [&](uint32_t i) {
+        double t, u, v;
+        if (hit_triangle(s.tris[i], r, 0.0, Aabb::inf, t, u, v)) ++crossings;
+    });
+    return crossings % 2 == 1;
+}
+
+Aabb bounds(const MeshShape& s) { return s.valid ? s.box : Aabb{}; }
+
+}  // namespace lumen::render

@@ -1,0 +1,34 @@
+// Plane n.p = d: infinite, so it always lands in the unbounded list.
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "render/shapes.hpp"
+
+namespace lumen::render {
+
+PlaneShape make_plane(const scene::Plane& p) {
+    PlaneShape out{p.normal, p.distance, true};
+    double len = glm::length(p.normal);
+    out.valid = len > 0 && std::isfinite(len) && std::isfinite(p.distance);
+    if (out.valid) out.normal /= len;
+    return out;
+}
+
+bool intersect(const PlaneShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    double denom = glm::dot(s.normal, r.d);
+    if (!s.valid || denom == 0) return false;  // parallel rays miss (no 0/0)
+    double t = (s.distance - glm::dot(s.normal, r.o)) / denom;
+    if (!(t > tmin && t < tmax)) return false;
+    h.t = t;
+    h.normal = s.normal;
+    return true;
+}
+
+bool inside(const PlaneShape& s, const glm::dvec3& p) {
+    return s.valid && glm::dot(s.normal, p) < s.distance;
+}
+
+Aabb bounds(const PlaneShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
+
+}  // namespace lumen::render

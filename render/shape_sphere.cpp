@@ -1,0 +1,49 @@
+// Sphere: the quadratic solved without cancellation (the discriminant from the ray's closest
+// approach to the centre, the near root as c/q), accurate for small spheres far away.
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "render/polynomial.hpp"
+#include "render/shapes.hpp"
+
+namespace lumen::render {
+
+SphereShape make_sphere(const scene::Sphere& s) {
+    SphereShape out{s.center, s.radius, s.radius * s.radius, true};
+    out.valid = s.radius > 0 && std::isfinite(s.radius) && std::isfinite(s.center.x) &&
+                std::isfinite(s.center.y) && std::isfinite(s.center.z);
+    return out;
+}
+
+bool intersect(const SphereShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    if (!s.valid) return false;
+    glm::dvec3 oc = r.o - s.centre;
+    double a = glm::dot(r.d, r.d);
+    double b = glm::dot(oc, r.d);
+    // |oc - (b/a) d| is the distance of the closest approach: no large-number subtraction.
+    glm::dvec3 perp = oc - (b / a) * r.d;
+    double disc = a * (s.radius2 - glm::dot(perp, perp));
+    if (!(disc >= 0)) return false;
+    double q = -(b + std::copysign(std::sqrt(disc), b));
+    double c = glm::dot(oc, oc) - s.radius2;
+    double t0 = q != 0 ? c / q : 0, t1 = q / a;
+    if (t0 > t1) std::swap(t0, t1);
+    double t = t0 > tmin ? t0 : t1;
+    if (!(t > tmin && t < tmax)) return false;
+    h.t = t;
+    h.normal = (r.at(t) - s.centre) / s.radius;
+    return true;
+}
+
+bool inside(const SphereShape& s, const glm::dvec3& p) {
+    glm::dvec3 v = p - s.centre;
+    return s.valid && glm::dot(v, v) < s.radius2;
+}
+
+Aabb bounds(const SphereShape& s) {
+    if (!s.valid) return {};
+    return {s.centre - s.radius, s.centre + s.radius};
+}
+
+}  // namespace lumen::render
