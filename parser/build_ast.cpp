@@ -1,0 +1,250 @@
+// Frame bookkeeping and the finishers that shape each node (see build_ast.hpp).
+#include "parser/build_ast.hpp"
+
+#include <cstdlib>
+#include <string>
+
+namespace lumen::parser {
+
+using ast::Kind;
+using ast::Node;
+using ast::NodePtr;
+
+BuildState::BuildState(const SourceFile& file) : file_(&file) {
+    frames_.push_back({std::make_unique<Node>(Kind::Body, SourceLoc{&file, 1, 1, 0}), nullptr});
+}
+
+SourceLoc BuildState::loc(const InputIterator& it) const {
+    return SourceLoc{file_, uint32_t(it.line), uint32_t(it.column), uint32_t(it.byte)};
+}
+
+void BuildState::open(Kind kind, const InputIterator& at) {
+    frames_.push_back({std::make_unique<Node>(kind, loc(at)), at.data});
+}
+
+void BuildState::close(Finisher finish, const char* end) {
+    Frame f = std::move(frames_.back());
+    frames_.pop_back();
+    NodePtr n = finish(std::move(f.node), std::string_view(f.begin, std::size_t(end - f.begin)), *this);
+    if (n) frames_.back().node->children.push_back(std::move(n));
+}
+
+void BuildState::enter(const InputIterator& at) {
+    if (++depth_ > kMaxNesting)
+        throw ParseError(loc(at), "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+}
+
+void BuildState::macro_body(const InputIterator& begin, const InputIterator& end) {
+    Node& m = *frames_.back().node;
+    m.raw_begin = uint32_t(begin.byte);
+    m.raw_end = uint32_t(end.byte);
+    m.raw_loc = loc(begin);
+}
+
+NodePtr BuildState::take_result() {
+    auto& kids = frames_.front().node->children;
+    return kids.empty() ? nullptr : std::move(kids.front());
+}
+
+namespace finish {
+
+namespace {
+
+// Removes and returns children[0] (a token) of `n`.
+NodePtr pop_front(Node& n) {
+    NodePtr first = std::move(n.children.front());
+    n.children.erase(n.children.begin());
+    return first;
+}
+
+bool is_word_char(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+}  // namespace
+
+NodePtr keep(NodePtr n, std::string_view, BuildState&) { return n; }
+
+NodePtr text(NodePtr n, std::string_view t, BuildState&) {
+    n->text.assign(t);
+    return n;
+}
+
+NodePtr number(NodePtr n, std::string_view t, BuildState&) {
+    n->number = std::strtod(std::string(t).c_str(), nullptr);
+    return n;
+}
+
+NodePtr string(NodePtr n, std::string_view t, BuildState&) {
+    // t includes both quotes. Unknown escapes keep their backslash (Windows paths).
+    std::string out;
+    out.reserve(t.size());
+    for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+        char c = t[i];
+        if (c != '\\' || i + 2 >= t.size()) {
+            out += c;
+            continue;
+        }
+        char e = t[++i];
+        switch (e) {
+            case 'n': out += '\n'; break;
+            case 't': out += '\t'; break;
+            case 'r': out += '\r'; break;
+            case 'a': out += '\a'; break;
+            case 'b': out += '\b'; break;
+            case 'f': out += '\f'; break;
+            case 'v': out += '\v'; break;
+            case '0': out += '\0'; break;
+            case '\\': out += '\\'; break;
+            case '"': out += '"'; break;
+            case '\'': out += '\''; break;
+            default: out += '\\'; out += e; break;
+        }
+    }
+    n->text = std::move(out);
+    return n;
+}
+
+NodePtr member(NodePtr n, std::string_view t, BuildState&) {
+    n->text.assign(t.substr(1));  // drop the '.'
+    return n;
+}
+
+NodePtr fold_one(NodePtr n, std::string_view, BuildState&) {
+    if (n->children.size() == 1) return std::move(n->children.front());
+    return n;
+}
+
+NodePtr binary(NodePtr n, std::string_view, BuildState&) {
+    if (n->children.size() == 1) return std::move(n->children.front());
+    // children alternate operand, operator token, operand, ...
+    std::vector<NodePtr> operands;
+    operands.reserve(n->children.size() / 2 + 1);
+    for (std::size_t i = 0; i < n->children.size(); ++i) {
+        if (i % 2 == 1) n->ops.push_back(std::move(n->children[i]->text));
+        else operands.push_back(std::move(n->children[i]));
+    }
+    n->children = std::move(operands);
+    return n;
+}
+
+NodePtr postfix(NodePtr n, std::string_view, BuildState& st) {
+    auto& kids = n->children;
+    if (kids.size() == 1) return std::move(kids.front());
+    // Each suffix wraps the expression so far; bound the resulting depth.
+    if (kids.size() > std::size_t(kMaxNesting))
+        throw ParseError(kids[kMaxNesting]->loc,
+                         "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+    NodePtr base = std::move(kids.front());
+    bool base_is_fresh_index = false;  // consecutive [i][j] extend one Index node
+    for (std::size_t i = 1; i < kids.size(); ++i) {
+        NodePtr& suffix = kids[i];
+        if (suffix->kind == Kind::Index) {
+            if (!base_is_fresh_index) {
+                auto idx = std::make_unique<Node>(Kind::Index, base->loc);
+                idx->children.push_back(std::move(base));
+                base = std::move(idx);
+                base_is_fresh_index = true;
+            }
+            base->children.push_back(std::move(suffix->children.front()));
+        } else {
+            auto mem = std::make_unique<Node>(Kind::Member, base->loc);
+            mem->text = std::move(suffix->text);
+            mem->children.push_back(std::move(base));
+            base = std::move(mem);
+            base_is_fresh_index = false;
+        }
+    }
+    (void)st;
+    return base;
+}
+
+NodePtr named(NodePtr n, std::string_view, BuildState&) {
+    n->text = std::move(pop_front(*n)->text);
+    return n;
+}
+
+NodePtr bare_colour(NodePtr n, std::string_view, BuildState&) { return n; }
+
+NodePtr array_decl(NodePtr n, std::string_view, BuildState&) {
+    for (NodePtr& c : n->children) {
+        if (c->kind == Kind::ArrayInit) {
+            n->flag = true;
+        } else if (c->children.empty()) {
+            c = std::make_unique<Node>(Kind::Null, c->loc);  // `array[]`: size not given
+        } else {
+            c = std::move(c->children.front());
+        }
+    }
+    return n;
+}
+
+NodePtr params(NodePtr n, std::string_view, BuildState&) {
+    for (NodePtr& p : n->children) n->params.push_back(std::move(p->text));
+    n->children.clear();
+    n->text = "(";
+    return n;
+}
+
+NodePtr block(NodePtr n, std::string_view, BuildState&) {
+    n->text = std::move(pop_front(*n)->text);
+    if (!n->children.empty() && n->children.front()->kind == Kind::Null &&
+        n->children.front()->text == "(")
+        n->params = std::move(pop_front(*n)->params);
+    return n;
+}
+
+NodePtr branch(NodePtr n, std::string_view, BuildState&) {
+    if (n->children.size() == 1)  // #else / #ifdef branch: no condition
+        n->children.insert(n->children.begin(), std::make_unique<Node>(Kind::Null, n->loc));
+    return n;
+}
+
+NodePtr directive_word(NodePtr n, std::string_view t, BuildState&) {
+    std::size_t i = 1;  // after '#'
+    while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
+    std::size_t j = i;
+    while (j < t.size() && is_word_char(t[j])) ++j;
+    n->text.assign(t.substr(i, j - i));
+    return n;
+}
+
+NodePtr version(NodePtr n, std::string_view, BuildState&) {
+    NodePtr& v = n->children.front();
+    if (v->kind == Kind::Null) {  // `#version unofficial ...;`
+        n->text = v->text;
+        v = std::make_unique<Node>(Kind::Null, v->loc);
+    }
+    return n;
+}
+
+NodePtr for_loop(NodePtr n, std::string_view, BuildState&) {
+    n->text = std::move(pop_front(*n)->text);
+    if (n->children.size() == 3)  // start, end, body: no step
+        n->children.insert(n->children.begin() + 2, std::make_unique<Node>(Kind::Null, n->loc));
+    return n;
+}
+
+NodePtr macro_param(NodePtr n, std::string_view t, BuildState&) {
+    // `name` or `optional name` (with any whitespace or comments between).
+    std::size_t end = t.size();
+    std::size_t begin = end;
+    while (begin > 0 && is_word_char(t[begin - 1])) --begin;
+    n->text.assign(t.substr(begin, end - begin));
+    n->flag = begin != 0;
+    return n;
+}
+
+NodePtr macro(NodePtr n, std::string_view, BuildState&) {
+    n->text = std::move(pop_front(*n)->text);
+    for (NodePtr& p : n->children) {
+        n->params.push_back(std::move(p->text));
+        n->optional_params.push_back(p->flag);
+    }
+    n->children.clear();
+    return n;
+}
+
+}  // namespace finish
+
+}  // namespace lumen::parser

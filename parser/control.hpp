@@ -1,0 +1,48 @@
+// The PEGTL control class for the SDL grammar: builds the tree (build_ast.hpp), guards the
+// nesting depth, and turns must<> failures into ParseError with the messages of errors.hpp.
+#pragma once
+#include <tao/pegtl.hpp>
+
+#include "parser/build_ast.hpp"
+#include "parser/errors.hpp"
+
+namespace lumen::parser {
+
+template <typename Rule>
+struct build_control : tao::pegtl::normal<Rule> {
+    template <tao::pegtl::apply_mode A, tao::pegtl::rewind_mode M,
+              template <typename...> class Action, template <typename...> class Control,
+              typename ParseInput>
+    static bool match(ParseInput& in, BuildState& st) {
+        using base = tao::pegtl::normal<Rule>;
+        using traits = node_traits<Rule>;
+        // Lookaheads (at<>, not_at<>) run without actions: build nothing there.
+        if constexpr (A == tao::pegtl::apply_mode::nothing) {
+            return base::template match<A, M, Action, Control>(in, st);
+        } else {
+            if constexpr (traits::nests) st.enter(in.iterator());
+            bool ok;
+            if constexpr (traits::builds) {
+                st.open(traits::kind, in.iterator());
+                ok = base::template match<A, M, Action, Control>(in, st);
+                if (ok) st.close(traits::finisher, in.current());
+                else st.discard();
+            } else {
+                const std::size_t mark = st.mark();
+                ok = base::template match<A, M, Action, Control>(in, st);
+                if (!ok) st.truncate(mark);
+            }
+            if constexpr (traits::nests) st.leave();
+            return ok;
+        }
+    }
+
+    template <typename ParseInput, typename... States>
+    [[noreturn]] static void raise(const ParseInput& in, BuildState& st) {
+        std::string hint;
+        std::string msg = error_text<Rule>(in, st, hint);
+        throw ParseError(st.loc(in.iterator()), msg, hint);
+    }
+};
+
+}  // namespace lumen::parser

@@ -1,0 +1,41 @@
+#include "parser/dump.hpp"
+
+#include <sstream>
+
+namespace lumen::parser {
+
+namespace {
+
+void write(std::ostringstream& out, const ast::Node& n) {
+    using K = ast::Kind;
+    out << '(' << ast::kind_name(n.kind);
+    if (n.kind == K::Number) out << ' ' << n.number;
+    else if (n.kind == K::String) out << " \"" << n.text << '"';
+    else if (!n.text.empty()) out << ' ' << n.text;
+    if (!n.params.empty()) {
+        out << " [";
+        for (std::size_t i = 0; i < n.params.size(); ++i) {
+            if (i) out << ' ';
+            if (i < n.optional_params.size() && n.optional_params[i]) out << "optional ";
+            out << n.params[i];
+        }
+        out << ']';
+    }
+    if (n.kind == K::ArrayDecl && n.flag) out << " init";
+    for (std::size_t i = 0; i < n.children.size(); ++i) {
+        if (n.kind == K::Binary && i > 0) out << ' ' << n.ops[i - 1];
+        out << ' ';
+        write(out, *n.children[i]);
+    }
+    out << ')';
+}
+
+}  // namespace
+
+std::string dump(const ast::Node& n) {
+    std::ostringstream out;
+    write(out, n);
+    return out.str();
+}
+
+}  // namespace lumen::parser

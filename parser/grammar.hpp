@@ -1,0 +1,488 @@
+// The SDL grammar as PEGTL rules. Rules only: what each rule builds is in build_ast.hpp, and
+// what a failed must<> point says is in errors.hpp.
+//
+// Padding convention: a rule consumes no leading whitespace, and item-level rules consume the
+// whitespace and comments after themselves (`sep`), so a node's location is its first
+// character.
+#pragma once
+#include <cctype>
+#include <cstring>
+#include <string_view>
+
+#include <tao/pegtl.hpp>
+
+#include "parser/keywords.hpp"
+
+namespace lumen::parser::rules {
+
+namespace pegtl = tao::pegtl;
+using namespace tao::pegtl;
+
+// ---- lexical --------------------------------------------------------------------------------
+
+// Length of the identifier at the input (0 if none): [A-Za-z_][A-Za-z0-9_]*.
+template <typename ParseInput>
+std::size_t word_length(ParseInput& in) {
+    const std::size_t avail = in.size(256);
+    const char* p = in.current();
+    auto first = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    auto other = [&](char c) { return first(c) || (c >= '0' && c <= '9'); };
+    if (avail == 0 || !first(p[0])) return 0;
+    std::size_t n = 1;
+    while (n < avail && other(p[n])) ++n;
+    return n;
+}
+
+// A whole identifier-like word accepted by `Pred` (a keyword class from keywords.hpp).
+template <bool (*Pred)(std::string_view)>
+struct word_if {
+    using rule_t = word_if;
+    using subs_t = empty_list;
+    template <typename ParseInput>
+    static bool match(ParseInput& in) {
+        const std::size_t n = word_length(in);
+        if (n == 0 || !Pred(std::string_view(in.current(), n))) return false;
+        in.bump_in_this_line(n);
+        return true;
+    }
+};
+
+inline bool any_word(std::string_view) { return true; }
+inline bool user_or_expression_word(std::string_view w) {
+    return !is_reserved(w) || is_expression_word(w);
+}
+inline bool plain_keyword(std::string_view w) {
+    return is_reserved(w) && !is_expression_word(w) && w != "array" && !is_colour_keyword(w) &&
+           !is_rgb_word(w);
+}
+inline bool unreserved_word(std::string_view w) { return !is_reserved(w); }
+inline bool reserved_word(std::string_view w) { return is_reserved(w); }
+
+// Scanners shared by the comment/string rules and the raw macro-body scanner. Each takes a
+// pointer at the opening delimiter and returns the pointer after the closing one, or nullptr
+// when the input ends first. Loops, not recursion, so nesting depth is no stack hazard.
+inline const char* skip_block_comment(const char* p, const char* end) {
+    int depth = 0;
+    while (p + 1 < end) {
+        if (p[0] == '/' && p[1] == '*') {
+            ++depth;
+            p += 2;
+        } else if (p[0] == '*' && p[1] == '/') {
+            p += 2;
+            if (--depth == 0) return p;
+        } else {
+            ++p;
+        }
+    }
+    return nullptr;
+}
+inline const char* skip_string(const char* p, const char* end) {
+    for (++p; p < end; ++p) {
+        if (*p == '\\' && p + 1 < end) ++p;
+        else if (*p == '"') return p + 1;
+    }
+    return nullptr;
+}
+
+// Error tags (no input is matched by them; errors.hpp gives their messages).
+struct unterminated_comment {};
+struct unterminated_string {};
+struct missing_macro_end {};
+
+// Matches a delimited token with `Skip`; raises `Error` (located at the opening delimiter)
+// when the input ends inside it.
+template <char C0, char C1, const char* (*Skip)(const char*, const char*), typename Error>
+struct delimited {
+    using rule_t = delimited;
+    using subs_t = empty_list;
+    template <apply_mode A, rewind_mode M, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&&... st) {
+        if (in.empty() || in.peek_char(0) != C0) return false;
+        if (C1 != 0 && (in.size(2) < 2 || in.peek_char(1) != C1)) return false;
+        const char* after = Skip(in.current(), in.end());
+        if (!after) Control<Error>::raise(in, st...);
+        in.bump(std::size_t(after - in.current()));
+        return true;
+    }
+};
+
+// block_comment := "/*" (block_comment | any)* "*/"   (comments nest, as in POV-Ray)
+struct block_comment : delimited<'/', '*', skip_block_comment, unterminated_comment> {};
+// line_comment := "//" any* (eol | eof)
+struct line_comment : seq<two<'/'>, until<eolf>> {};
+// sep := (space | line_comment | block_comment | ^Z)*
+struct sep : star<sor<ascii::space, line_comment, block_comment, one<'\x1a'>>> {};
+
+template <typename R>
+struct padded : seq<R, sep> {};
+
+// word := [A-Za-z_][A-Za-z0-9_]*
+struct word : word_if<any_word> {};
+
+// number := (digit+ ['.' digit*] | '.' digit+) [('e'|'E') ['+'|'-'] digit+]
+struct exponent : seq<one<'e', 'E'>, opt<one<'+', '-'>>, plus<digit>> {};
+struct number : seq<sor<seq<plus<digit>, opt<one<'.'>, star<digit>>>, seq<one<'.'>, plus<digit>>>,
+                    opt<exponent>> {};
+
+// string := '"' ('\\' any | any but '"')* '"'
+struct string_literal : delimited<'"', 0, skip_string, unterminated_string> {};
+
+// ---- expressions ----------------------------------------------------------------------------
+
+template <bool Cmp> struct ternary_t;
+struct expression;
+struct vector_component;
+
+struct comma : one<','> {};
+struct list_sep : seq<sep, comma, sep> {};
+
+struct close_paren : one<')'> {};
+struct close_angle : one<'>'> {};
+struct close_bracket : one<']'> {};
+struct close_brace : one<'}'> {};
+struct open_brace : one<'{'> {};
+struct colon : one<':'> {};
+
+// paren := '(' expression ')'
+struct paren : seq<one<'('>, sep, must<expression>, sep, must<close_paren>> {};
+
+// vector := '<' vector_component {[','] vector_component} '>'   (POV accepts `< -1 0 0 >`)
+struct vector : seq<one<'<'>, sep, must<vector_component>,
+                    star<sor<list_sep, sep>, vector_component>, sep, must<close_angle>> {};
+
+struct block;
+struct array_decl;
+struct array_init;
+
+// call_arg := block | array_decl | expression
+struct call_arg : sor<block, array_decl, expression> {};
+struct call_name : word_if<user_or_expression_word> {};
+// call := name '(' [call_arg {',' call_arg}] ')'
+struct call : seq<call_name, sep, one<'('>, sep, opt<call_arg, star<list_sep, must<call_arg>>>,
+                  sep, must<close_paren>> {};
+
+// ident := a non-reserved word or a constant (x, pi, clock, true, ...)
+struct ident : word_if<user_or_expression_word> {};
+
+// colour_part := rgb_word expression | component_word expression | expression
+struct rgb_word : word_if<is_rgb_word> {};
+struct component_word : word_if<is_component_word> {};
+struct colour_keyword : word_if<is_colour_keyword> {};
+struct rgb_part : seq<rgb_word, sep, must<expression>> {};
+struct component_part : seq<component_word, sep, must<expression>> {};
+struct bare_part : seq<expression> {};
+struct colour_first_part : sor<rgb_part, component_part, bare_part> {};
+// colour := ('color'|'colour') colour_first_part {component_part} | rgb_part {component_part}
+struct colour_expr
+    : sor<seq<colour_keyword, sep, must<colour_first_part>, star<sep, component_part>>,
+          seq<rgb_part, star<sep, component_part>>> {};
+
+// array_decl := 'array' ['mixed'] {'[' [expression] ']'} [array_init]
+struct array_keyword : TAO_PEGTL_KEYWORD("array") {};
+struct array_dim : seq<one<'['>, sep, opt<expression>, sep, must<close_bracket>> {};
+struct array_decl : seq<array_keyword, sep, opt<TAO_PEGTL_KEYWORD("mixed"), sep>,
+                        star<array_dim, sep>, opt<array_init>> {};
+// array_init := '{' [element {',' element} [',']] '}' ; element := array_init | block | expression
+struct array_element : sor<array_init, block, expression> {};
+struct array_init : seq<one<'{'>, sep, opt<array_element, star<list_sep, array_element>>,
+                        opt<list_sep>, sep, must<close_brace>> {};
+
+// primary := number | string | vector | paren | array_decl | colour | call | ident
+struct primary : sor<number, string_literal, vector, paren, array_decl, colour_expr, call, ident> {};
+
+// postfix := primary {'.' word | '[' expression ']'}
+struct member_suffix : seq<one<'.'>, word> {};
+struct index_suffix : seq<one<'['>, sep, must<expression>, sep, must<close_bracket>> {};
+// (no whitespace before a suffix, so `[0 Red] [1 Blue]` map entries never read as indexing)
+struct postfix : seq<primary, star<sor<member_suffix, index_suffix>>> {};
+
+// unary := ('-' | '+' | '!') unary | postfix
+struct unary_op : one<'-', '+', '!'> {};
+struct unary;
+struct prefixed : seq<unary_op, sep, must<unary>> {};
+struct unary : sor<prefixed, postfix> {};
+
+// Binary levels: operand {op operand}, one flat node per chain.
+struct mul_op : one<'*', '/'> {};
+struct add_op : one<'+', '-'> {};
+struct cmp_op : sor<string<'<', '='>, string<'>', '='>, string<'!', '='>, one<'=', '<', '>'>> {};
+struct and_op : one<'&'> {};
+struct or_op : one<'|'> {};
+
+template <typename Operand, typename Op>
+struct chain : seq<Operand, star<sep, Op, sep, must<Operand>>> {};
+
+struct product : chain<unary, mul_op> {};
+struct sum : chain<product, add_op> {};
+struct comparison : chain<sum, cmp_op> {};
+template <bool Cmp>
+using relational = std::conditional_t<Cmp, comparison, sum>;
+template <bool Cmp>
+struct conjunction : chain<relational<Cmp>, and_op> {};
+template <bool Cmp>
+struct disjunction : chain<conjunction<Cmp>, or_op> {};
+// ternary := disjunction ['?' ternary ':' ternary]
+template <bool Cmp>
+struct ternary_tail : seq<sep, one<'?'>, sep, must<ternary_t<Cmp>>, sep, must<colon>, sep,
+                          must<ternary_t<Cmp>>> {};
+template <bool Cmp>
+struct ternary_t : seq<disjunction<Cmp>, opt<ternary_tail<Cmp>>> {};
+
+// expression := ternary (full expression, comparisons included)
+struct expression : ternary_t<true> {};
+// vector_component := ternary without top-level comparisons, so '>' closes the vector
+struct vector_component : ternary_t<false> {};
+
+// ---- items ----------------------------------------------------------------------------------
+
+struct item;
+struct directive;
+
+// body := item*   (a directive branch; stops at '}', ']', '#end', '#else', ... or eof)
+struct body : star<item> {};
+
+// block := word ['(' word {',' word} ')'] '{' item* '}'
+struct block_word : word {};
+struct param_name : word {};
+struct block_params : seq<one<'('>, sep, opt<param_name, star<list_sep, param_name>>, sep,
+                          one<')'>> {};
+struct block : seq<block_word, sep, opt<block_params, sep>, open_brace, sep, star<item>,
+                   must<close_brace>> {};
+
+// map_entry := '[' item* ']'
+struct map_entry : seq<one<'['>, sep, star<item>, must<close_bracket>> {};
+
+// keyword := a reserved word that is neither an expression word nor a colour word
+struct keyword_item : word_if<plain_keyword> {};
+struct comma_item : one<','> {};
+struct semicolon_item : one<';'> {};
+
+// item := directive | block | map_entry | ',' | ';' | keyword | expression
+struct item : sor<directive, padded<block>, padded<map_entry>, padded<comma_item>,
+                  padded<semicolon_item>, padded<keyword_item>, padded<expression>> {};
+
+// ---- directives -----------------------------------------------------------------------------
+
+// hash<W> := '#' blank* W   (W a whole word)
+template <typename W>
+struct hash : seq<one<'#'>, star<blank>, W> {};
+#define LUMEN_DIRECTIVE(name, text) \
+    struct name : hash<TAO_PEGTL_KEYWORD(text)> {}
+
+LUMEN_DIRECTIVE(kw_version, "version");
+LUMEN_DIRECTIVE(kw_include, "include");
+LUMEN_DIRECTIVE(kw_declare, "declare");
+LUMEN_DIRECTIVE(kw_local, "local");
+LUMEN_DIRECTIVE(kw_undef, "undef");
+LUMEN_DIRECTIVE(kw_if, "if");
+LUMEN_DIRECTIVE(kw_ifdef, "ifdef");
+LUMEN_DIRECTIVE(kw_ifndef, "ifndef");
+LUMEN_DIRECTIVE(kw_elseif, "elseif");
+LUMEN_DIRECTIVE(kw_else, "else");
+LUMEN_DIRECTIVE(kw_end, "end");
+LUMEN_DIRECTIVE(kw_switch, "switch");
+LUMEN_DIRECTIVE(kw_case, "case");
+LUMEN_DIRECTIVE(kw_range, "range");
+LUMEN_DIRECTIVE(kw_break, "break");
+LUMEN_DIRECTIVE(kw_while, "while");
+LUMEN_DIRECTIVE(kw_for, "for");
+LUMEN_DIRECTIVE(kw_macro, "macro");
+LUMEN_DIRECTIVE(kw_default, "default");
+LUMEN_DIRECTIVE(kw_debug, "debug");
+LUMEN_DIRECTIVE(kw_warning, "warning");
+LUMEN_DIRECTIVE(kw_error, "error");
+LUMEN_DIRECTIVE(kw_render, "render");
+LUMEN_DIRECTIVE(kw_statistics, "statistics");
+LUMEN_DIRECTIVE(kw_fopen, "fopen");
+LUMEN_DIRECTIVE(kw_fclose, "fclose");
+LUMEN_DIRECTIVE(kw_read, "read");
+LUMEN_DIRECTIVE(kw_write, "write");
+#undef LUMEN_DIRECTIVE
+
+struct end_directive : padded<kw_end> {};
+struct optional_semicolon : opt<one<';'>, sep> {};
+
+// version := '#version' ('unofficial' text-up-to-';' | expression) [';']
+struct unofficial_version : seq<TAO_PEGTL_KEYWORD("unofficial"), until<at<one<';'>>>> {};
+struct version_value : sor<unofficial_version, expression> {};
+struct version_directive : seq<kw_version, sep, must<version_value>, sep, optional_semicolon> {};
+
+// include := '#include' expression
+struct include_directive : seq<kw_include, sep, must<expression>, sep> {};
+
+// declare := ('#declare' | '#local') target '=' rhs [';']
+//   target := word {'[' expression ']'}   (not a reserved word)
+//   rhs := texture-block {texture-block} | block | array_decl | directive | expression
+struct declare_name : word_if<unreserved_word> {};
+struct reserved_declare_name : word_if<reserved_word> {};
+struct declare_target : seq<declare_name, star<index_suffix>> {};
+struct equals_sign : one<'='> {};
+struct texture_block : seq<at<TAO_PEGTL_KEYWORD("texture"), sep, one<'{'>>, block> {};
+struct if_directive;
+struct switch_directive;
+struct declare_rhs : sor<seq<texture_block, star<sep, texture_block>>, block, array_decl,
+                         if_directive, switch_directive, expression> {};
+// deprecated := 'deprecated' ['once'] string   (a warning to print when the name is used)
+struct deprecation : seq<TAO_PEGTL_KEYWORD("deprecated"), sep,
+                         opt<TAO_PEGTL_KEYWORD("once"), sep>, must<string_literal>> {};
+struct declare_directive
+    : seq<sor<kw_declare, kw_local>, sep, opt<deprecation, sep>,
+          sor<seq<at<reserved_declare_name>, raise<reserved_declare_name>>,
+              must<declare_target>>,
+          sep,
+          must<equals_sign>, sep, must<declare_rhs>, sep, optional_semicolon> {};
+
+// undef := '#undef' word
+struct undef_name : word {};
+struct undef_directive : seq<kw_undef, sep, must<undef_name>, sep> {};
+
+// if := '#if' expression body {'#elseif' expression body} ['#else' body] '#end'
+struct then_branch : seq<must<expression>, sep, body> {};
+struct elseif_branch : seq<kw_elseif, sep, must<expression>, sep, body> {};
+struct else_branch : seq<kw_else, sep, body> {};
+struct if_directive
+    : seq<kw_if, sep, then_branch, star<elseif_branch>, opt<else_branch>, must<end_directive>> {};
+
+// ifdef := ('#ifdef' | '#ifndef') '(' word {'[' expression ']'} ')' body ['#else' body] '#end'
+struct open_paren : one<'('> {};
+struct ifdef_name : word {};
+struct ifdef_target : seq<ifdef_name, star<index_suffix>> {};
+struct ifdef_then : seq<body> {};
+struct ifdef_directive : seq<sor<kw_ifdef, kw_ifndef>, sep, must<open_paren>, sep,
+                             must<ifdef_target>, sep, must<close_paren>, sep, ifdef_then,
+                             opt<else_branch>, must<end_directive>> {};
+
+// switch := '#switch' expression {case | range | else} '#end'
+//   case := '#case' expression body ; range := '#range' '(' expr ',' expr ')' body
+struct case_clause : seq<kw_case, sep, must<expression>, sep, body> {};
+struct range_bounds : seq<must<open_paren>, sep, must<expression>, sep, must<comma>, sep,
+                          must<expression>, sep, must<close_paren>> {};
+struct range_clause : seq<kw_range, sep, range_bounds, sep, body> {};
+struct switch_directive : seq<kw_switch, sep, must<expression>, sep,
+                              star<sor<case_clause, range_clause, else_branch>>,
+                              must<end_directive>> {};
+
+// break := '#break'
+struct break_directive : seq<kw_break, sep> {};
+
+// while := '#while' expression body '#end'
+struct while_directive : seq<kw_while, sep, must<expression>, sep, body, must<end_directive>> {};
+
+// for := '#for' '(' word ',' expr ',' expr [',' expr] ')' body '#end'
+struct for_variable : word {};
+struct for_step : opt<list_sep, must<expression>> {};
+struct for_directive
+    : seq<kw_for, sep, must<open_paren>, sep, must<for_variable>, sep, must<comma>, sep,
+          must<expression>, sep, must<comma>, sep, must<expression>, for_step, sep,
+          must<close_paren>, sep, body, must<end_directive>> {};
+
+// macro := '#macro' word '(' [param {',' param}] ')' raw-text '#end'
+//   param := ['optional'] word (commas may be omitted, as POV allows); the raw text runs to
+//   the matching #end (not parsed here)
+struct macro_name : word {};
+struct optional_param : seq<TAO_PEGTL_KEYWORD("optional"), sep, word> {};
+struct macro_param : sor<optional_param, word> {};
+struct macro_params : opt<macro_param, star<sor<list_sep, sep>, macro_param>, opt<list_sep>> {};
+// The raw macro body: everything up to the #end matching this #macro, counting nested
+// #if/#ifdef/#ifndef/#switch/#while/#for/#macro and skipping comments and strings. The state
+// records the byte range (State::macro_body); the body is parsed when the macro is called.
+inline bool opens_directive_block(std::string_view w) {
+    return w == "if" || w == "ifdef" || w == "ifndef" || w == "switch" || w == "while" ||
+           w == "for" || w == "macro";
+}
+struct macro_raw_body {
+    using rule_t = macro_raw_body;
+    using subs_t = empty_list;
+    template <apply_mode A, rewind_mode M, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename State>
+    static bool match(ParseInput& in, State& st) {
+        const auto begin = in.iterator();
+        const char* p = in.current();
+        const char* const end = in.end();
+        int depth = 1;
+        while (p < end) {
+            if (p[0] == '/' && p + 1 < end && p[1] == '/') {
+                while (p < end && *p != '\n') ++p;
+            } else if (p[0] == '/' && p + 1 < end && p[1] == '*') {
+                const char* after = skip_block_comment(p, end);
+                if (!after) {
+                    in.bump(std::size_t(p - in.current()));
+                    Control<unterminated_comment>::raise(in, st);
+                }
+                p = after;
+            } else if (p[0] == '"') {
+                const char* after = skip_string(p, end);
+                if (!after) {
+                    in.bump(std::size_t(p - in.current()));
+                    Control<unterminated_string>::raise(in, st);
+                }
+                p = after;
+            } else if (p[0] == '#') {
+                const char* q = p + 1;
+                while (q < end && (*q == ' ' || *q == '\t')) ++q;
+                const char* w = q;
+                while (q < end && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+                const std::string_view name(w, std::size_t(q - w));
+                if (opens_directive_block(name)) {
+                    ++depth;
+                } else if (name == "end" && --depth == 0) {
+                    in.bump(std::size_t(p - in.current()));
+                    st.macro_body(begin, in.iterator());
+                    return true;
+                }
+                p = q;
+            } else {
+                ++p;
+            }
+        }
+        in.bump(std::size_t(end - in.current()));
+        Control<missing_macro_end>::raise(in, st);
+    }
+};
+struct macro_directive : seq<kw_macro, sep, must<macro_name>, sep, must<open_paren>, sep,
+                             macro_params, sep, must<close_paren>, macro_raw_body,
+                             must<end_directive>> {};
+
+// default := '#default' '{' item* '}'
+struct default_directive : seq<kw_default, sep, must<open_brace>, sep, star<item>,
+                               must<close_brace>, sep> {};
+
+// message := ('#debug' | '#warning' | '#error' | '#render' | '#statistics') expression
+struct message_word : sor<kw_debug, kw_warning, kw_error, kw_render, kw_statistics> {};
+struct message_directive : seq<message_word, sep, must<expression>, sep> {};
+
+// file_io := '#fopen' word expression word | '#fclose' word
+//          | ('#read' | '#write') '(' expression {',' expression} ')'
+struct file_handle : word {};
+struct open_mode : word {};
+struct fileio_args : seq<must<open_paren>, sep, list<expression, list_sep>, sep,
+                         must<close_paren>> {};
+struct fileio_directive
+    : sor<seq<kw_fopen, sep, must<file_handle>, sep, must<expression>, sep, must<open_mode>>,
+          seq<kw_fclose, sep, must<file_handle>>, seq<sor<kw_read, kw_write>, sep, fileio_args>> {};
+struct fileio : seq<fileio_directive, sep> {};
+
+// Words that end a directive body rather than start an item.
+struct body_terminator : sor<kw_end, kw_else, kw_elseif, kw_case, kw_range> {};
+struct unknown_directive : seq<one<'#'>, star<blank>, opt<word>> {};
+
+// directive := one of the above; an unknown '#word' is an error
+struct directive
+    : sor<declare_directive, if_directive, while_directive, for_directive, macro_directive,
+          ifdef_directive, switch_directive, break_directive, include_directive,
+          version_directive, undef_directive, default_directive, message_directive, fileio,
+          seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
+
+// ---- entry points ---------------------------------------------------------------------------
+
+struct byte_order_mark : TAO_PEGTL_STRING("\xEF\xBB\xBF") {};
+struct end_of_file : eof {};
+// file := [BOM] sep item* eof
+struct file : seq<opt<byte_order_mark>, sep, star<item>, must<end_of_file>> {};
+// fragment := sep item* eof   (a macro body)
+struct fragment : seq<sep, star<item>, must<end_of_file>> {};
+// single_expression := sep expression eof
+struct single_expression : seq<sep, must<expression>, sep, must<end_of_file>> {};
+
+}  // namespace lumen::parser::rules
