@@ -20,6 +20,7 @@ struct RenderOptions {
     int threads = 0;          // 0 = all cores
     int block_size = 32;      // +BS
     int quality = 9;          // +Q
+    bool alpha = false;       // +UA: the background is transparent (alpha channel)
     // Partial render, 0-based inclusive pixel ranges (full image when -1).
     int start_row = 0, end_row = -1, start_col = 0, end_col = -1;
 };

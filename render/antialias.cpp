@@ -1,0 +1,239 @@
+#include "render/antialias.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace lumen::render {
+namespace {
+
+// H: a fixed permutation of 0..4095 built by the shuffle of §8.4.
+std::array<int, 4096> make_permutation() {
+    std::array<int, 4096> h{};
+    for (int i = 0; i < 4096; ++i) h[i] = i;
+    int32_t r = 0;
+    for (int i = 4095; i >= 0; --i) {
+        r = int32_t(uint32_t(r) * 1812433253u + 12345u);
+        const int j = ((r >> 16) & 0x7FFF) % 4096;
+        std::swap(h[i], h[j]);
+    }
+    return h;
+}
+
+// lumen's jitter table: 256 values spread evenly over [−0.5, 0.5) in a scrambled order.
+std::array<double, 256> make_jitter_table() {
+    std::array<double, 256> t{};
+    for (int i = 0; i < 256; ++i) t[i] = ((i * 167 + 13) % 256) / 256.0 - 0.5;
+    return t;
+}
+
+const std::array<int, 4096> kHash = make_permutation();
+const std::array<double, 256> kJitter = make_jitter_table();
+
+void put(Image& image, int x, int y, const Sample& s) {
+    float* p = image.at(x, y);
+    p[0] = float(s.rgb.x);
+    p[1] = float(s.rgb.y);
+    p[2] = float(s.rgb.z);
+    p[3] = 0;
+    p[4] = float(s.t);
+}
+
+double srgb_decode(double v) {
+    return v < 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+}  // namespace
+
+void jitter2d(double x, double y, double& jx, double& jy) {
+    const int ix1 = int(x * 1021), iy1 = int(y * 1019);
+    const int ix2 = int(x * 1019), iy2 = int(y * 1021);
+    jx = kJitter[kHash[(kHash[ix1 & 4095] ^ iy1) & 4095] & 255];
+    jy = kJitter[kHash[(kHash[ix2 & 4095] ^ iy2) & 4095] & 255];
+}
+
+double ColourCompare::difference(const Sample& a, const Sample& b) const {
+    auto e = [&](double v) {
+        double lin = v;
+        if (decode_gamma == 0)
+            lin = srgb_decode(v);
+        else if (decode_gamma != 1)
+            lin = v > 0 ? std::pow(v, decode_gamma) : v;
+        return lin > 0 ? std::pow(lin, 1.0 / aa_gamma) : 0.0;
+    };
+    return std::fabs(e(a.rgb.x) - e(b.rgb.x)) + std::fabs(e(a.rgb.y) - e(b.rgb.y)) +
+           std::fabs(e(a.rgb.z) - e(b.rgb.z)) + std::fabs(a.t - b.t);
+}
+
+ColourCompare colour_compare_for(const scene::Scene& scene, double aa_gamma) {
+    ColourCompare c;
+    c.aa_gamma = aa_gamma > 0 ? aa_gamma : 2.5;
+    if (scene.globals.assumed_gamma)
+        c.decode_gamma = *scene.globals.assumed_gamma;
+    else if (scene.language_version < 3.7)
+        c.decode_gamma = 0;  // legacy: working gamma = display gamma (sRGB)
+    return c;
+}
+
+BlockRenderer::BlockRenderer(const Tracer& tracer, const CameraModel& camera,
+                             const RenderOptions& options, const ColourCompare& compare)
+    : tracer_(tracer), camera_(camera), options_(options), compare_(compare) {}
+
+Sample BlockRenderer::sample(double x, double y, ThreadState& state,
+                             uint64_t& primary_rays) const {
+    ++primary_rays;
+    const RayColour c = tracer_.trace_primary(camera_.ray(x, y), state);
+    return {c.rgb, c.transmit};
+}
+
+void BlockRenderer::render(int left, int top, int right, int bottom, Image& image,
+                           ThreadState& state, uint64_t& primary_rays) const {
+    if (!options_.antialias)
+        render_plain(left, top, right, bottom, image, state, primary_rays);
+    else if (options_.aa_method == 2)
+        render_am2(left, top, right, bottom, image, state, primary_rays);
+    else
+        render_am1(left, top, right, bottom, image, state, primary_rays);
+}
+
+void BlockRenderer::render_plain(int left, int top, int right, int bottom, Image& image,
+                                 ThreadState& state, uint64_t& primary_rays) const {
+    for (int y = top; y <= bottom; ++y)
+        for (int x = left; x <= right; ++x) put(image, x, y, sample(x, y, state, primary_rays));
+}
+
+Sample BlockRenderer::supersample(double px, double py, const Sample& centre, ThreadState& state,
+                                  uint64_t& primary_rays) const {
+    const int n = std::clamp(options_.aa_depth, 1, 9);
+    const double step = 1.0 / n;
+    const double amount = options_.jitter ? options_.jitter_amount : 0.0;
+    Sample sum = centre;
+    for (int j = 0; j < n; ++j) {
+        const double oy = -(0.5 - step / 2) + j * step;
+        for (int i = 0; i < n; ++i) {
+            const double ox = -(0.5 - step / 2) + i * step;
+            double sx = px + ox, sy = py + oy;
+            if (amount > 0) {
+                double jx, jy;
+                jitter2d(sx, sy, jx, jy);
+                sx += jx * amount / n;
+                sy += jy * amount / n;
+            }
+            const Sample s = sample(sx, sy, state, primary_rays);
+            sum.rgb += s.rgb;
+            sum.t += s.t;
+        }
+    }
+    const double k = 1.0 / (n * n + 1);
+    return {sum.rgb * k, sum.t * k};
+}
+
+// AM1: the block is framed by the row above and the column to its left, traced once and never
+// supersampled; a pixel is supersampled when it differs from its left or top neighbour.
+void BlockRenderer::render_am1(int left, int top, int right, int bottom, Image& image,
+                               ThreadState& state, uint64_t& primary_rays) const {
+    const int w = right - left + 2, h = bottom - top + 2;  // plus the frame
+    std::vector<Sample> value(size_t(w) * h);
+    std::vector<unsigned char> done(size_t(w) * h, 0);
+    auto idx = [&](int x, int y) { return size_t(y - top + 1) * w + (x - left + 1); };
+    const double thr = options_.aa_threshold;
+
+    for (int x = left; x <= right; ++x) {
+        value[idx(x, top - 1)] = sample(x, top - 1, state, primary_rays);
+        done[idx(x, top - 1)] = 1;
+    }
+    for (int y = top; y <= bottom; ++y) {
+        value[idx(left - 1, y)] = sample(left - 1, y, state, primary_rays);
+        done[idx(left - 1, y)] = 1;
+        for (int x = left; x <= right; ++x) {
+            const Sample c = sample(x, y, state, primary_rays);
+            value[idx(x, y)] = c;
+            const bool ld = compare_.difference(value[idx(x - 1, y)], c) >= thr;
+            const bool td = compare_.difference(value[idx(x, y - 1)], c) >= thr;
+            if (ld && !done[idx(x - 1, y)]) {
+                value[idx(x - 1, y)] =
+                    supersample(x - 1, y, value[idx(x - 1, y)], state, primary_rays);
+                done[idx(x - 1, y)] = 1;
+            }
+            if (td && !done[idx(x, y - 1)]) {
+                value[idx(x, y - 1)] =
+                    supersample(x, y - 1, value[idx(x, y - 1)], state, primary_rays);
+                done[idx(x, y - 1)] = 1;
+            }
+            if (ld || td) {
+                value[idx(x, y)] = supersample(x, y, c, state, primary_rays);
+                done[idx(x, y)] = 1;
+            }
+        }
+    }
+    for (int y = top; y <= bottom; ++y)
+        for (int x = left; x <= right; ++x) put(image, x, y, value[idx(x, y)]);
+}
+
+// AM2: every pixel starts from its four corner rays and subdivides where they differ.
+void BlockRenderer::render_am2(int left, int top, int right, int bottom, Image& image,
+                               ThreadState& state, uint64_t& primary_rays) const {
+    const int depth = std::clamp(options_.aa_depth, 1, 9);
+    const int cells = 1 << (depth - 1);  // sub-grid cells per pixel side
+    const int grid = cells + 1;
+    const double amount = options_.jitter ? options_.jitter_amount : 0.0;
+    const double jitter_scale = amount / ((1 << depth) + 1);
+    const double thr = options_.aa_threshold;
+
+    const int cw = right - left + 2;
+    std::vector<Sample> corners(size_t(cw) * (bottom - top + 2));
+    for (int y = top; y <= bottom + 1; ++y)
+        for (int x = left; x <= right + 1; ++x)
+            corners[size_t(y - top) * cw + (x - left)] =
+                sample(x - 0.5, y - 0.5, state, primary_rays);
+
+    std::vector<Sample> sub(size_t(grid) * grid);
+    std::vector<unsigned char> have(size_t(grid) * grid);
+    for (int y = top; y <= bottom; ++y) {
+        for (int x = left; x <= right; ++x) {
+            std::fill(have.begin(), have.end(), 0);
+            auto corner = [&](int cx, int cy) { return corners[size_t(cy - top) * cw + (cx - left)]; };
+            sub[0] = corner(x, y);
+            sub[cells] = corner(x + 1, y);
+            sub[size_t(cells) * grid] = corner(x, y + 1);
+            sub[size_t(cells) * grid + cells] = corner(x + 1, y + 1);
+            have[0] = have[cells] = have[size_t(cells) * grid] = have[size_t(cells) * grid + cells] = 1;
+            auto at = [&](int gi, int gj) -> const Sample& {
+                const size_t k = size_t(gj) * grid + gi;
+                if (!have[k]) {
+                    double sx = x - 0.5 + double(gi) / cells, sy = y - 0.5 + double(gj) / cells;
+                    if (jitter_scale > 0) {
+                        double jx, jy;
+                        jitter2d(sx, sy, jx, jy);
+                        sx += jx * jitter_scale;
+                        sy += jy * jitter_scale;
+                    }
+                    sub[k] = sample(sx, sy, state, primary_rays);
+                    have[k] = 1;
+                }
+                return sub[k];
+            };
+            // Cell [i0..i1]×[j0..j1] of the sub-grid, with `level` subdivisions left.
+            auto subdivide = [&](auto&& self, int i0, int j0, int i1, int j1, int level) -> Sample {
+                const Sample a = at(i0, j0), b = at(i1, j0), c = at(i0, j1), d = at(i1, j1);
+                const bool split =
+                    level > 0 && (compare_.difference(a, b) >= thr || compare_.difference(a, c) >= thr ||
+                                  compare_.difference(a, d) >= thr || compare_.difference(b, c) >= thr ||
+                                  compare_.difference(b, d) >= thr || compare_.difference(c, d) >= thr);
+                if (!split)
+                    return {(a.rgb + b.rgb + c.rgb + d.rgb) * 0.25, (a.t + b.t + c.t + d.t) * 0.25};
+                const int im = (i0 + i1) / 2, jm = (j0 + j1) / 2;
+                const Sample q[4] = {self(self, i0, j0, im, jm, level - 1),
+                                     self(self, im, j0, i1, jm, level - 1),
+                                     self(self, i0, jm, im, j1, level - 1),
+                                     self(self, im, jm, i1, j1, level - 1)};
+                return {(q[0].rgb + q[1].rgb + q[2].rgb + q[3].rgb) * 0.25,
+                        (q[0].t + q[1].t + q[2].t + q[3].t) * 0.25};
+            };
+            put(image, x, y, subdivide(subdivide, 0, 0, cells, cells, depth - 1));
+        }
+    }
+}
+
+}  // namespace lumen::render

@@ -1,0 +1,61 @@
+// Rendering one block of pixels, with POV-Ray's anti-aliasing methods (povray-semantics.md §8):
+// none (one ray through each pixel centre), AM1 (non-recursive adaptive, block framed) and
+// AM2 (recursive adaptive over pixel corners). Blocks are independent, so the image does not
+// depend on the thread count or block order.
+#pragma once
+#include <vector>
+
+#include "render/camera.hpp"
+#include "render/render.hpp"
+#include "render/tracer.hpp"
+
+namespace lumen::render {
+
+// A sample: working-space rgb (unclipped) and transmit.
+struct Sample {
+    glm::dvec3 rgb{0};
+    double t = 0;
+};
+
+// The deterministic jitter POV uses for anti-aliasing sub-samples: a hash of the sample
+// position into [−0.5, 0.5)². The hash structure (1021/1019 multipliers, the 4096-entry
+// permutation) follows §8.4; the 256 jitter values themselves are lumen's own fixed table
+// (POV-Ray's table is source data we do not copy), so jittered images are reproducible but
+// not identical to POV-Ray's. `-J` renders are exact.
+void jitter2d(double x, double y, double& jx, double& jy);
+
+// How colours are compared for anti-aliasing: through c^(1/aa_gamma) of linear values.
+struct ColourCompare {
+    double decode_gamma = 1.0;  // working -> linear power; 0 = sRGB curve (legacy scenes)
+    double aa_gamma = 2.5;
+    double difference(const Sample& a, const Sample& b) const;
+};
+ColourCompare colour_compare_for(const scene::Scene& scene, double aa_gamma);
+
+class BlockRenderer {
+public:
+    BlockRenderer(const Tracer& tracer, const CameraModel& camera, const RenderOptions& options,
+                  const ColourCompare& compare);
+
+    // Renders pixels [left..right] × [top..bottom] (inclusive) into `image`.
+    void render(int left, int top, int right, int bottom, Image& image, ThreadState& state,
+                uint64_t& primary_rays) const;
+
+private:
+    Sample sample(double x, double y, ThreadState& state, uint64_t& primary_rays) const;
+    void render_plain(int left, int top, int right, int bottom, Image& image, ThreadState& state,
+                      uint64_t& primary_rays) const;
+    void render_am1(int left, int top, int right, int bottom, Image& image, ThreadState& state,
+                    uint64_t& primary_rays) const;
+    void render_am2(int left, int top, int right, int bottom, Image& image, ThreadState& state,
+                    uint64_t& primary_rays) const;
+    Sample supersample(double px, double py, const Sample& centre, ThreadState& state,
+                       uint64_t& primary_rays) const;
+
+    const Tracer& tracer_;
+    const CameraModel& camera_;
+    RenderOptions options_;
+    ColourCompare compare_;
+};
+
+}  // namespace lumen::render

@@ -1,0 +1,168 @@
+// Output encoding (povray-semantics.md §2) and file writing through OpenImageIO.
+#include "render/image_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "parser/diagnostics.hpp"
+
+namespace lumen::render {
+namespace {
+
+// How working-space values become file values.
+struct Encoding {
+    bool identity = false;      // legacy scene: bytes are the working values
+    double decode_gamma = 1.0;  // working -> linear power (assumed_gamma)
+    double file_gamma = -1.0;   // <= 0: sRGB curve
+};
+
+Encoding encoding_for(const scene::Scene& scene, const OutputOptions& options) {
+    Encoding e;
+    e.file_gamma = options.file_gamma;
+    if (scene.globals.assumed_gamma) {
+        e.decode_gamma = *scene.globals.assumed_gamma;
+    } else if (scene.language_version < 3.7) {
+        // No #version (3.62) and no assumed_gamma: gamma handling is off entirely.
+        e.identity = true;
+    }
+    return e;
+}
+
+// POV evaluates these transfer curves in single precision; double differs by one level
+// in rare pixels.
+float srgb_encode(float v) {
+    if (v <= 0.0031308f) return 12.92f * v;
+    return 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+float to_linear(float v, const Encoding& e) {
+    if (e.identity || e.decode_gamma == 1.0) return v;
+    return v > 0 ? std::pow(v, float(e.decode_gamma)) : v;
+}
+
+// Working value -> encoded file value in [0,1] (before quantisation), unclipped.
+float encode(float v, const Encoding& e) {
+    if (e.identity) return v;
+    const float lin = to_linear(v, e);
+    if (e.file_gamma <= 0) return srgb_encode(lin);
+    if (e.file_gamma == 1.0) return lin;
+    return lin > 0 ? std::pow(lin, float(1.0 / e.file_gamma)) : lin;
+}
+
+double quantise(float encoded, int maxval) {
+    const double c = std::clamp(double(encoded), 0.0, 1.0);
+    return std::floor(c * maxval + 0.5);
+}
+
+const char* format_name(FileType type) {
+    switch (type) {
+        case FileType::PNG: return "png";
+        case FileType::EXR: return "openexr";
+        case FileType::HDR: return "hdr";
+        case FileType::TIFF: return "tiff";
+        case FileType::PPM: return "pnm";
+    }
+    return "png";
+}
+
+const char* extension(FileType type) {
+    switch (type) {
+        case FileType::PNG: return ".png";
+        case FileType::EXR: return ".exr";
+        case FileType::HDR: return ".hdr";
+        case FileType::TIFF: return ".tif";
+        case FileType::PPM: return ".ppm";
+    }
+    return ".png";
+}
+
+bool is_float_format(FileType type) { return type == FileType::EXR || type == FileType::HDR; }
+
+// Pixels in the layout OIIO is asked to write: float for HDR formats (linear light),
+// quantised integers (as floats holding exact integer levels) otherwise.
+std::vector<float> prepare_pixels(const Image& image, const Encoding& e, const OutputOptions& o,
+                                  int channels, int maxval) {
+    const bool floating = is_float_format(o.type);
+    std::vector<float> out(size_t(image.width) * image.height * channels);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const float* p = image.at(x, y);
+            float* q = &out[(size_t(y) * image.width + x) * channels];
+            const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c) {
+                float v = p[c];
+                // The buffer holds premultiplied colour; straight alpha files need it undone.
+                if (o.alpha && !floating && alpha > 0) v /= alpha;
+                if (floating)
+                    q[c] = e.identity ? v : to_linear(v, e);
+                else
+                    q[c] = float(quantise(encode(v, e), maxval) / maxval);
+            }
+            if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval) / maxval);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+int encode_8bit(double v, const scene::Scene& scene, const OutputOptions& options) {
+    return int(quantise(encode(float(v), encoding_for(scene, options)), 255));
+}
+
+void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
+                 const std::string& path) {
+    namespace fs = std::filesystem;
+    using OIIO::ImageOutput;
+    using OIIO::ImageSpec;
+    using OIIO::TypeDesc;
+
+    const Encoding e = encoding_for(scene, options);
+    const int channels = options.alpha ? 4 : 3;
+    const bool floating = is_float_format(options.type);
+    const bool sixteen = !floating && options.bits > 8 &&
+                         (options.type == FileType::PNG || options.type == FileType::TIFF ||
+                          options.type == FileType::PPM);
+    const int maxval = sixteen ? 65535 : 255;
+    const TypeDesc stored = floating ? (options.type == FileType::HDR ? TypeDesc::FLOAT
+                                                                       : TypeDesc::HALF)
+                                     : (sixteen ? TypeDesc::UINT16 : TypeDesc::UINT8);
+
+    ImageSpec spec(image.width, image.height, channels, stored);
+    if (!floating) {
+        spec.attribute("oiio:ColorSpace", e.identity ? "" : "sRGB");
+        spec.attribute("oiio:Gamma", 2.2f);
+    }
+    spec.attribute("Software", "lumen " LUMEN_VERSION);
+
+    const fs::path target(path);
+    fs::path tmp = target;
+    tmp.replace_filename("." + target.filename().string() + ".lumen-tmp" + extension(options.type));
+
+    auto out = ImageOutput::create(format_name(options.type));
+    if (!out) throw LumenError({}, "cannot create a writer for '" + path + "'");
+    if (!out->open(tmp.string(), spec))
+        throw LumenError({}, "cannot write '" + path + "': " + out->geterror());
+    const std::vector<float> pixels = prepare_pixels(image, e, options, channels, maxval);
+    const bool ok = out->write_image(TypeDesc::FLOAT, pixels.data());
+    const std::string err = ok ? "" : out->geterror();
+    out->close();
+    if (!ok) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw LumenError({}, "cannot write '" + path + "': " + err);
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw LumenError({}, "cannot rename the image to '" + path + "': " + ec.message());
+    }
+}
+
+}  // namespace lumen::render

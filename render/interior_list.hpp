@@ -1,0 +1,50 @@
+// The list of interiors a ray is inside (povray-semantics.md §5.1), in a fixed array so that
+// spawning rays never allocates.
+#pragma once
+#include <array>
+
+#include "scene/texture.hpp"
+
+namespace lumen::render {
+
+class InteriorList {
+public:
+    static constexpr int kCapacity = 24;
+    struct Entry {
+        const void* id = nullptr;
+        const scene::Interior* interior = nullptr;
+    };
+
+    bool empty() const { return size_ == 0; }
+    int size() const { return size_; }
+    const Entry& operator[](int i) const { return entries_[i]; }
+    const Entry& last() const { return entries_[size_ - 1]; }
+
+    int find(const void* id) const {
+        for (int i = size_ - 1; i >= 0; --i)
+            if (entries_[i].id == id) return i;
+        return -1;
+    }
+    // Deeper nesting than kCapacity is dropped: the ray then behaves as if outside.
+    void push(const void* id, const scene::Interior* interior) {
+        if (size_ < kCapacity) entries_[size_++] = {id, interior};
+    }
+    void remove_at(int i) {
+        for (int k = i; k + 1 < size_; ++k) entries_[k] = entries_[k + 1];
+        --size_;
+    }
+    // Enter the interior if outside it, leave it if inside (shadow rays, continued rays).
+    void toggle(const void* id, const scene::Interior* interior) {
+        const int i = find(id);
+        if (i >= 0)
+            remove_at(i);
+        else
+            push(id, interior);
+    }
+
+private:
+    std::array<Entry, kCapacity> entries_{};
+    int size_ = 0;
+};
+
+}  // namespace lumen::render

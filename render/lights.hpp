@@ -1,0 +1,43 @@
+// Light sources prepared once per render (povray-semantics.md §6): direction, distance and
+// attenuation (spotlight cone, cylinder, fade) at a surface point, and area-light grids.
+#pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/light.hpp"
+
+namespace lumen::render {
+
+struct LightSource {
+    const scene::Light* light = nullptr;
+    glm::dvec3 position{0}, colour{1};
+    glm::dvec3 axis{0, 0, 1};  // norm(point_at − position): spot/cylinder/parallel
+    bool spot = false, cylinder = false, parallel = false, shadowless = false;
+    double cos_radius = 1, cos_falloff = 1, tightness = 0;
+    double radius = 0, falloff = 0;  // cylinder lights: in units
+    double fade_distance = 0, fade_power = 0;
+    // Area light: n1 × n2 grid around `position` (axis1 along u, axis2 along v).
+    bool area = false, jitter = false, circular = false, orient = false;
+    int n1 = 1, n2 = 1, adaptive = 100;
+    glm::dvec3 axis1{0}, axis2{0};
+};
+
+// Direction and distance to the light and its attenuated colour at one surface point.
+struct LightSample {
+    glm::dvec3 dir{0};     // unit, from the point towards the light
+    double distance = 0;   // shadow ray length
+    glm::dvec3 colour{0};  // light colour after cone/cylinder and fade attenuation
+};
+
+std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights);
+
+// Returns false when the point gets no light at all (outside a cone).
+bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& out);
+
+// World position of area-light grid sample (u, v), given as fractional grid indices so jitter
+// can move it; `to_light` (unit, point -> light centre) is used by `orient`.
+glm::dvec3 area_sample_position(const LightSource& light, double u, double v,
+                                const glm::dvec3& to_light);
+
+}  // namespace lumen::render

@@ -1,0 +1,15 @@
+// Pigment evaluation: solid colours, colour maps, pigment maps and list forms (§4).
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "scene/texture.hpp"
+
+namespace lumen::render {
+
+// Colour of `pigment` at world point p; a null pigment is POV's default (black, rgbft 0).
+scene::Colour evaluate_pigment(const scene::Pigment* pigment, const glm::dvec3& p);
+
+// Blends all five channels: a + w·(b − a).
+scene::Colour mix(const scene::Colour& a, const scene::Colour& b, double w);
+
+}  // namespace lumen::render

@@ -1,0 +1,129 @@
+// render(): the image cut into blocks (+BS) rendered by a pool of std::threads.
+#include "render/render.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "parser/diagnostics.hpp"
+#include "render/antialias.hpp"
+#include "render/camera.hpp"
+#include "render/geometry.hpp"
+#include "render/tracer.hpp"
+
+namespace lumen::render {
+namespace {
+
+class GeometryIntersector final : public Intersector {
+public:
+    explicit GeometryIntersector(const Geometry& g) : g_(g) {}
+    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit,
+                   bool shadow) const override {
+        return g_.intersect(ray, t_min, t_max, hit, shadow);
+    }
+
+private:
+    const Geometry& g_;
+};
+
+struct Block {
+    int left, top, right, bottom;
+};
+
+// Blocks of block_size pixels starting at the top-left of the render area.
+std::vector<Block> make_blocks(int x0, int y0, int x1, int y1, int size) {
+    std::vector<Block> blocks;
+    for (int top = y0; top <= y1; top += size)
+        for (int left = x0; left <= x1; left += size)
+            blocks.push_back({left, top, std::min(x1, left + size - 1), std::min(y1, top + size - 1)});
+    return blocks;
+}
+
+}  // namespace
+
+Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats,
+             const Progress& progress) {
+    const auto started = std::chrono::steady_clock::now();
+    if (!scene.unsupported.empty()) {
+        const scene::Unsupported& u = scene.unsupported.front();
+        throw LumenError(u.loc, "unsupported feature: " + u.feature);
+    }
+    if (options.width <= 0 || options.height <= 0)
+        throw LumenError({}, "image size must be positive");
+
+    const Geometry geometry(scene);
+    const GeometryIntersector intersector(geometry);
+    TraceOptions trace_options;
+    trace_options.quality = options.quality;
+    trace_options.alpha = options.alpha;
+    const Tracer tracer(scene, intersector, trace_options);
+    const CameraModel camera(scene.camera, options.width, options.height);
+    const BlockRenderer blocks_renderer(tracer, camera, options,
+                                        colour_compare_for(scene, options.aa_gamma));
+
+    Image image;
+    image.width = options.width;
+    image.height = options.height;
+    image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);
+
+    const int x0 = std::clamp(options.start_col, 0, options.width - 1);
+    const int y0 = std::clamp(options.start_row, 0, options.height - 1);
+    const int x1 = options.end_col < 0 ? options.width - 1 : std::min(options.end_col, options.width - 1);
+    const int y1 = options.end_row < 0 ? options.height - 1 : std::min(options.end_row, options.height - 1);
+    if (x1 < x0 || y1 < y0) return image;
+
+    const int block_size =
+        std::clamp(options.block_size, 4, std::max({4, options.width, options.height}));
+    const std::vector<Block> blocks = make_blocks(x0, y0, x1, y1, block_size);
+
+    unsigned threads = options.threads > 0 ? unsigned(options.threads)
+                                           : std::max(1u, std::thread::hardware_concurrency());
+    threads = std::min<unsigned>(threads, unsigned(blocks.size()));
+
+    std::atomic<size_t> next{0};
+    std::mutex progress_mutex;
+    size_t finished = 0;
+    RenderStats total;
+    std::exception_ptr failure;
+
+    auto worker = [&](unsigned id) {
+        ThreadState state;
+        state.rng.seed(12345 + id);
+        uint64_t primary = 0;
+        try {
+            for (size_t b = next++; b < blocks.size(); b = next++) {
+                const Block& k = blocks[b];
+                blocks_renderer.render(k.left, k.top, k.right, k.bottom, image, state, primary);
+                std::lock_guard lock(progress_mutex);
+                ++finished;
+                if (progress) progress(double(finished) / blocks.size());
+            }
+        } catch (...) {
+            std::lock_guard lock(progress_mutex);
+            if (!failure) failure = std::current_exception();
+            next = blocks.size();
+        }
+        std::lock_guard lock(progress_mutex);
+        total.primary_rays += primary;
+        total.total_rays += state.counters.rays;
+        total.shadow_rays += state.counters.shadow_rays;
+    };
+
+    if (threads <= 1) {
+        worker(0);
+    } else {
+        std::vector<std::thread> pool;
+        for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker, i);
+        for (std::thread& t : pool) t.join();
+    }
+    if (failure) std::rethrow_exception(failure);
+
+    total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (stats) *stats = total;
+    return image;
+}
+
+}  // namespace lumen::render

@@ -1,0 +1,217 @@
+#include "render/shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "render/shadows.hpp"
+
+namespace lumen::render {
+namespace {
+
+constexpr double kEpsilon = 1e-10;
+
+bool is_black(const glm::dvec3& c) {
+    return std::fabs(c.x) < kEpsilon && std::fabs(c.y) < kEpsilon && std::fabs(c.z) < kEpsilon;
+}
+
+double max_component(const glm::dvec3& c) { return std::max({c.x, c.y, c.z}); }
+
+// Sum of the recursive 4-corner averages over an area light's grid (§6.3).
+class AreaShadow {
+public:
+    AreaShadow(const LightSource& l, const SurfaceSample& s, const LightSample& centre,
+               const LightingEnv& env, const InteriorList& interiors, ThreadState& state)
+        : l_(l), s_(s), centre_(centre), env_(env), interiors_(interiors), state_(state) {
+        const size_t n = size_t(l.n1) * l.n2;
+        state.area_filter.resize(n);
+        state.area_valid.assign(n, 0);
+    }
+
+    glm::dvec3 filter() { return block(0, 0, l_.n1 - 1, l_.n2 - 1, 0); }
+
+private:
+    glm::dvec3 sample(int u, int v) {
+        const size_t k = size_t(v) * l_.n1 + u;
+        if (!state_.area_valid[k]) {
+            double ju = u, jv = v;
+            if (l_.jitter) {
+                ju += state_.uniform() - 0.5;
+                jv += state_.uniform() - 0.5;
+            }
+            const glm::dvec3 pos = area_sample_position(l_, ju, jv, centre_.dir);
+            glm::dvec3 to = pos - s_.point;
+            double dist = glm::length(to);
+            if (l_.parallel) {
+                to = centre_.dir;
+                dist = glm::dot(pos - s_.point, to);
+            } else if (dist > 0) {
+                to /= dist;
+            }
+            state_.area_filter[k] =
+                shadow_filter(*env_.geometry, s_.point, to, dist, interiors_, state_.counters);
+            state_.area_valid[k] = 1;
+        }
+        return state_.area_filter[k];
+    }
+
+    static double diff(const glm::dvec3& a, const glm::dvec3& b) {
+        return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z);
+    }
+
+    glm::dvec3 block(int u1, int v1, int u2, int v2, int level) {
+        const glm::dvec3 c00 = sample(u1, v1), c10 = sample(u2, v1);
+        const glm::dvec3 c01 = sample(u1, v2), c11 = sample(u2, v2);
+        const bool large = u2 - u1 > 1 || v2 - v1 > 1;
+        const bool differs = diff(c00, c10) > 0.1 || diff(c10, c11) > 0.1 ||
+                             diff(c11, c01) > 0.1 || diff(c01, c00) > 0.1;
+        if (large && (level < l_.adaptive || differs)) {
+            const int ua = (u1 + u2) / 2, ub = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
+            const int va = (v1 + v2) / 2, vb = (v1 + v2 + 1) / 2;
+            return 0.25 * (block(u1, v1, ua, va, level + 1) + block(ub, v1, u2, va, level + 1) +
+                           block(u1, vb, ua, v2, level + 1) + block(ub, vb, u2, v2, level + 1));
+        }
+        return 0.25 * (c00 + c10 + c01 + c11);
+    }
+
+    const LightSource& l_;
+    const SurfaceSample& s_;
+    const LightSample& centre_;
+    const LightingEnv& env_;
+    const InteriorList& interiors_;
+    ThreadState& state_;
+};
+
+glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightSample& ls,
+                      const LightingEnv& env, const InteriorList& interiors, ThreadState& state) {
+    if (l.area && env.quality >= 5)
+        return AreaShadow(l, s, ls, env, interiors, state).filter();
+    return shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors, state.counters);
+}
+
+glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm::dvec3& ldir,
+                      double cos_light) {
+    glm::dvec3 out(0);
+    if (f.phong > 0) {
+        const glm::dvec3 rv = s.view - 2 * glm::dot(s.view, s.normal) * s.normal;
+        const double c = glm::dot(rv, ldir);
+        if (c > 0 && !(f.phong_size >= 60 && c <= 0.0008)) {
+            const double k = f.phong * std::pow(c, f.phong_size);
+            out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
+                                  : glm::dvec3(k);
+        }
+    }
+    if (f.specular > 0) {
+        const glm::dvec3 h = (ldir - s.view) * 0.5;
+        const double len = glm::length(h);
+        const double c = len > 0 ? glm::dot(h, s.normal) / len : 0;
+        if (c > 0) {
+            const double k = f.specular * std::pow(c, 1.0 / f.roughness);
+            out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
+                                  : glm::dvec3(k);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+glm::dvec3 metallic_factor(double metallic, double cos_angle, const glm::dvec3& rgb) {
+    const double x = std::acos(std::clamp(cos_angle, -1.0, 1.0)) / (std::numbers::pi / 2);
+    const double fm =
+        std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+    return glm::dvec3(1) + metallic * (1 - fm) * (rgb - glm::dvec3(1));
+}
+
+glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
+                       const InteriorList& interiors, ThreadState& state) {
+    const scene::Finish& f = *s.finish;
+    if (env.quality <= 1) return s.colour;  // quick colour: the pigment at full ambient
+    glm::dvec3 out(0);
+    if (!env.ambient_off) out += s.colour * f.ambient * env.ambient_light * s.opacity;
+    out += s.colour * f.emission * s.opacity;
+    if (!env.lights) return out;
+    for (const LightSource& l : *env.lights) {
+        LightSample ls;
+        if (!illuminate(l, s.point, ls)) continue;
+        const double cos_light = glm::dot(s.normal, ls.dir);
+        bool backside = false;
+        double intensity_cos = cos_light;
+        if (cos_light < kEpsilon) {
+            if (s.double_illuminate) {
+                intensity_cos = std::fabs(cos_light);
+            } else if (f.diffuse_back > 0) {
+                backside = true;
+                intensity_cos = std::fabs(cos_light);
+            } else {
+                continue;
+            }
+        }
+        glm::dvec3 lc = ls.colour;
+        if (env.quality >= 4 && !l.shadowless) {
+            lc *= shadow_for(l, s, ls, env, interiors, state);
+            if (is_black(lc)) continue;
+        }
+        const double diffuse = backside ? f.diffuse_back : f.diffuse;
+        if (diffuse > 0) {
+            double k = f.brilliance == 1 ? intensity_cos : std::pow(intensity_cos, f.brilliance);
+            k = k * diffuse * s.opacity;
+            if (f.crand > 0) k -= f.crand * state.uniform();
+            out += k * s.colour * lc;
+        }
+        if (!l.shadowless && !backside && cos_light >= kEpsilon)
+            out += highlights(s, f, ls.dir, cos_light) * lc;
+    }
+    return out;
+}
+
+Reflectivity reflectivity(const scene::Finish& f, double cos_i, double relative_ior,
+                          const glm::dvec3& pigment) {
+    Reflectivity r;
+    const glm::dvec3 rmin = f.reflection_min, rmax = f.reflection_max;
+    if (is_black(rmin) && is_black(rmax)) return r;
+    if (f.fresnel) {
+        const double n = relative_ior, c = cos_i;
+        const double g2 = n * n + c * c - 1;
+        if (g2 <= 0) {
+            r.colour = rmax;
+        } else {
+            const double g = std::sqrt(g2);
+            const double a = (g - c) / (g + c);
+            const double b = (c * (g + c) - 1) / (c * (g - c) + 1);
+            const double fr = std::clamp(0.5 * a * a * (1 + b * b), 0.0, 1.0);
+            r.colour = fr * rmax + (1 - fr) * rmin;
+        }
+        r.weight = max_component(r.colour);
+    } else {
+        const double frac =
+            f.reflection_falloff == 1 ? 1 - cos_i : std::pow(1 - cos_i, f.reflection_falloff);
+        if (std::fabs(frac) < kEpsilon)
+            r.colour = rmin;
+        else if (std::fabs(frac - 1) < kEpsilon)
+            r.colour = rmax;
+        else
+            r.colour = frac * rmax + (1 - frac) * rmin;
+        r.weight = std::max(max_component(rmax), max_component(rmin));
+    }
+    if (f.reflection_metallic > 0)
+        r.colour *= metallic_factor(f.reflection_metallic, cos_i, pigment);
+    return r;
+}
+
+glm::dvec3 reflect_direction(const glm::dvec3& d, const glm::dvec3& nl, const glm::dvec3& n) {
+    glm::dvec3 r = d - 2 * glm::dot(d, nl) * nl;
+    const double rn = glm::dot(r, n);
+    if (rn < 0) {
+        // Perturbed normals can send the ray below the real surface: bend it back.
+        if (glm::dot(r, nl) < 0)
+            r = d - 2 * glm::dot(d, n) * n;
+        else
+            r -= 2 * rn * n;
+    }
+    return glm::normalize(r);
+}
+
+}  // namespace lumen::render

@@ -1,0 +1,58 @@
+// The finish model (povray-semantics.md §3.2–3.4): ambient, emission, diffuse, brilliance,
+// phong, specular, metallic, and the reflectivity of a surface.
+#pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/interior_list.hpp"
+#include "render/intersector.hpp"
+#include "render/lights.hpp"
+#include "render/trace_state.hpp"
+#include "scene/texture.hpp"
+
+namespace lumen::render {
+
+// Everything the lights need to know about one texture layer at a hit point.
+struct SurfaceSample {
+    glm::dvec3 point{0};
+    glm::dvec3 view{0, 0, 1};    // unit direction of the incoming ray
+    glm::dvec3 normal{0, 1, 0};  // shading normal, facing the incoming ray
+    glm::dvec3 colour{0};        // pigment rgb
+    double opacity = 1;          // 1 − f − t (or the legacy formula)
+    const scene::Finish* finish = nullptr;
+    bool double_illuminate = false;
+};
+
+// Scene-wide lighting state shared by all threads (read-only while rendering).
+struct LightingEnv {
+    const std::vector<LightSource>* lights = nullptr;
+    const Intersector* geometry = nullptr;
+    glm::dvec3 ambient_light{1};
+    bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient
+    int quality = 9;
+};
+
+// POV's metallic factor per channel: 1 + m·(1 − Fm)·(rgb − 1), with the Fresnel-like Fm of the
+// angle whose cosine is `cos_angle`.
+glm::dvec3 metallic_factor(double metallic, double cos_angle, const glm::dvec3& rgb);
+
+// Ambient + emission + every light's diffuse and highlights (with shadows).
+glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
+                       const InteriorList& interiors, ThreadState& state);
+
+// Reflectivity of a layer (§3.4): per-channel colour Rf and the factor by which the ray
+// weight is multiplied. `relative_ior` (n2/n1) is only used by fresnel.
+struct Reflectivity {
+    glm::dvec3 colour{0};
+    double weight = 0;
+    bool any() const { return colour.x != 0 || colour.y != 0 || colour.z != 0; }
+};
+Reflectivity reflectivity(const scene::Finish& finish, double cos_incidence, double relative_ior,
+                          const glm::dvec3& pigment);
+
+// Mirror direction of `dir` about the shading normal, kept above the raw surface (§3.4).
+glm::dvec3 reflect_direction(const glm::dvec3& dir, const glm::dvec3& shading_normal,
+                             const glm::dvec3& raw_normal);
+
+}  // namespace lumen::render

@@ -1,0 +1,23 @@
+// Shadow rays through transparent surfaces (povray-semantics.md §3.5) and interior fade (§5.2).
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "render/interior_list.hpp"
+#include "render/intersector.hpp"
+#include "render/trace_state.hpp"
+
+namespace lumen::render {
+
+// Attenuation of light travelling `depth` inside `interior`. Eye rays apply it whenever a
+// fade_distance is set; shadow rays only when fade_power > 0 as well.
+glm::dvec3 interior_fade(const scene::Interior& interior, double depth, bool shadow_ray);
+
+// The filter (per rgb channel, 1 = unshadowed) applied to light reaching `point` along unit
+// direction `dir` from a light `distance` away. The ray starts with a copy of the eye ray's
+// interior list and toggles it at every transparent surface, so a transparent solid filters
+// once when entered and once when left.
+glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
+                         const glm::dvec3& dir, double distance, const InteriorList& interiors,
+                         TraceCounters& counters);
+
+}  // namespace lumen::render

@@ -1,0 +1,66 @@
+#include "render/texture_layers.hpp"
+
+#include "render/pattern.hpp"
+#include "render/pigment.hpp"
+
+namespace lumen::render {
+
+const scene::Finish& default_finish() {
+    static const scene::Finish finish;
+    return finish;
+}
+
+namespace {
+
+const scene::Texture* top_layer(const scene::LayeredTexture& layers) {
+    return layers.empty() ? nullptr : layers.back().get();
+}
+
+ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p) {
+    const scene::Texture* t = top_layer(layers);
+    if (!t) return {scene::Colour{}, &default_finish(), nullptr};
+    return resolve_layer(*t, p);
+}
+
+}  // namespace
+
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) {
+    if (texture.pattern.type == scene::PatternType::Plain || texture.texture_map.empty()) {
+        return {evaluate_pigment(texture.pigment.get(), p),
+                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
+    }
+    const double v = pattern_value(texture.pattern, p);
+    const BlendWeights b = blend_weights(texture.texture_map, v);
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].texture, p);
+    if (b.upper_weight == 0) return lo;
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].texture, p);
+    ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
+    out.colour = mix(lo.colour, hi.colour, b.upper_weight);
+    return out;
+}
+
+void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
+                    ResolvedLayers& out) {
+    out.count = 0;
+    if (!layers || layers->empty()) {
+        out.layer[0] = {scene::Colour{}, &default_finish(), nullptr};
+        out.count = 1;
+        return;
+    }
+    for (auto it = layers->rbegin(); it != layers->rend() && out.count < ResolvedLayers::kMax; ++it)
+        out.layer[out.count++] = *it ? resolve_layer(**it, p)
+                                     : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr};
+}
+
+glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p) {
+    if (!layers || layers->empty()) return glm::dvec3(0);
+    glm::dvec3 filter(1);
+    for (const scene::TexturePtr& t : *layers) {
+        if (!t) return glm::dvec3(0);
+        filter *= layer_filter(resolve_layer(*t, p).colour);
+        if (filter.x == 0 && filter.y == 0 && filter.z == 0) break;
+    }
+    return filter;
+}
+
+}  // namespace lumen::render

@@ -1,0 +1,43 @@
+// Resolving a (layered, possibly patterned) texture at a point into plain layers, and the
+// light filter of a surface for shadow rays (§3.5, §3.6).
+#pragma once
+#include <array>
+
+#include <glm/vec3.hpp>
+
+#include "scene/texture.hpp"
+
+namespace lumen::render {
+
+// One plain layer at a point: pigment colour, finish and normal.
+struct ResolvedLayer {
+    scene::Colour colour;
+    const scene::Finish* finish = nullptr;  // never null after resolve
+    const scene::Normal* normal = nullptr;  // null: no perturbation
+};
+
+const scene::Finish& default_finish();
+
+// Plain texture -> its layer. A patterned texture used as one layer of several is resolved by
+// blending its entries' pigments and taking the finish/normal of the heavier entry (POV blends
+// whole shading results only for a single patterned texture; the tracer does that itself).
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p);
+
+// Top-first list of the resolved layers of `layers` (bottom-first in the scene graph); a null
+// or empty texture is the default one (black, default finish).
+struct ResolvedLayers {
+    static constexpr int kMax = 16;
+    std::array<ResolvedLayer, kMax> layer;
+    int count = 0;
+};
+void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out);
+
+// Product over layers of (rgb·filter + transmit): the light a surface lets through.
+glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p);
+
+// The filter colour of one layer: rgb·f + t per channel.
+inline glm::dvec3 layer_filter(const scene::Colour& c) {
+    return glm::dvec3(c.r, c.g, c.b) * c.f + glm::dvec3(c.t);
+}
+
+}  // namespace lumen::render

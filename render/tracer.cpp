@@ -1,0 +1,311 @@
+#include "render/tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "parser/diagnostics.hpp"
+#include "render/pattern.hpp"
+#include "render/pigment.hpp"
+#include "render/shadows.hpp"
+#include "render/texture_layers.hpp"
+
+namespace lumen::render {
+namespace {
+
+constexpr double kMinDepth = 1e-4;       // every ray ignores nearer hits (§7.3)
+constexpr double kMaxDistance = 1e7;     // depth reported for rays that escape
+constexpr int kMaxSkippedSurfaces = 64;  // no_image / no_reflection objects passed through
+
+double grey(const glm::dvec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
+double max_abs(const glm::dvec3& c) {
+    return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
+}
+
+const scene::Interior& default_interior() {
+    static const scene::Interior interior;
+    return interior;
+}
+
+double ior_of(const scene::Interior* in) { return in ? in->ior : 1.0; }
+
+// Where a ray goes when it crosses the surface of `hit`'s object: the new interior list and
+// the ratio of refractive indices (§5.1).
+double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& after) {
+    after = before;
+    const double ior = ior_of(hit.interior);
+    const int at = after.find(hit.interior_id);
+    if (after.empty()) {
+        after.push(hit.interior_id, hit.interior);
+        return 1.0 / ior;
+    }
+    if (at == after.size() - 1) {
+        after.remove_at(at);
+        return ior / (after.empty() ? 1.0 : ior_of(after.last().interior));
+    }
+    if (at >= 0) {
+        after.remove_at(at);
+        return 1.0;
+    }
+    const double eta = ior_of(after.last().interior) / ior;
+    after.push(hit.interior_id, hit.interior);
+    return eta;
+}
+
+// Single patterned texture whose entries are shaded separately and blended.
+bool is_texture_map(const scene::LayeredTexture* t) {
+    return t && t->size() == 1 && t->front() &&
+           t->front()->pattern.type != scene::PatternType::Plain &&
+           !t->front()->texture_map.empty();
+}
+
+}  // namespace
+
+struct Tracer::Context {
+    int level = 0;
+    double weight = 1;
+    InteriorList interiors;
+    RayKind kind = RayKind::Image;
+    bool continued = false;  // passes through an ior-1 surface without using a trace level
+};
+
+Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options)
+    : scene_(scene), geometry_(geometry), options_(options) {
+    if (!scene.unsupported.empty()) {
+        const scene::Unsupported& u = scene.unsupported.front();
+        throw LumenError(u.loc, "unsupported feature: " + u.feature);
+    }
+    lights_ = prepare_lights(scene.lights);
+    env_.lights = &lights_;
+    env_.geometry = &geometry_;
+    env_.ambient_light = scene.globals.ambient_light;
+    env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
+                       options.quality >= 9;
+    env_.quality = options.quality;
+    max_level_ = std::clamp(scene.globals.max_trace_level, 1, 256);
+    adc_bailout_ = scene.globals.adc_bailout;
+    legacy_opacity_ = scene.language_version < 3.7;
+}
+
+RayColour Tracer::trace_primary(const Ray& ray, ThreadState& state) const {
+    Context ctx;
+    double depth = 0;
+    return trace(ray, ctx, state, &depth);
+}
+
+bool Tracer::find_hit(const Ray& ray, RayKind kind, Hit& hit) const {
+    double t_min = kMinDepth;
+    for (int i = 0; i < kMaxSkippedSurfaces; ++i) {
+        if (!geometry_.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
+            return false;
+        const scene::Object* o = hit.object;
+        const bool invisible = o && ((kind == RayKind::Image && o->no_image) ||
+                                     (kind == RayKind::Reflection && o->no_reflection));
+        if (!invisible) return true;
+        t_min = hit.t;
+    }
+    return false;
+}
+
+RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
+                        double* depth) const {
+    *depth = kMaxDistance;
+    if (ctx.level >= max_level_ || ctx.weight < adc_bailout_) return {};
+    Context here = ctx;
+    if (!ctx.continued) ++here.level;
+    here.continued = false;
+    ++state.counters.rays;
+
+    Hit hit;
+    RayColour c;
+    if (find_hit(ray, ctx.kind, hit)) {
+        *depth = hit.t;
+        c = shade(ray, hit, here, state);
+    } else {
+        c = sky(ray.dir);
+    }
+    apply_fog(c, *depth, ctx.interiors);
+    return c;
+}
+
+RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
+                        ThreadState& state) const {
+    const scene::LayeredTexture* texture = hit.texture;
+    if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, ctx, state);
+    // texture_map: shade both neighbouring entries and blend the results.
+    const scene::Texture& t = *texture->front();
+    const BlendWeights b = blend_weights(t.texture_map, pattern_value(t.pattern, hit.point));
+    auto entry = [&](int i, double w) {
+        Context sub = ctx;
+        sub.weight *= w;
+        Hit h = hit;
+        h.texture = &t.texture_map[i].texture;
+        return shade(ray, h, sub, state);
+    };
+    if (b.upper_weight == 0) return entry(b.lower, 1.0);
+    RayColour out;
+    const double ws[2] = {1 - b.upper_weight, b.upper_weight};
+    const int idx[2] = {b.lower, b.upper};
+    for (int k = 0; k < 2; ++k) {
+        if (ws[k] * ctx.weight < adc_bailout_) continue;
+        const RayColour c = entry(idx[k], ws[k]);
+        out.rgb += ws[k] * c.rgb;
+        out.transmit += ws[k] * c.transmit;
+    }
+    return out;
+}
+
+RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
+                               const Context& ctx, ThreadState& state) const {
+    const glm::dvec3 d = ray.dir;
+    glm::dvec3 raw_n = hit.normal;
+    if (glm::dot(raw_n, d) > 0) raw_n = -raw_n;  // every surface is two-sided
+
+    ResolvedLayers layers;
+    resolve_layers(texture, hit.point, layers);
+
+    const int quality = options_.quality;
+    const bool double_illuminate = hit.object && hit.object->double_illuminate;
+
+    // Relative IOR across this surface, only needed by fresnel reflection.
+    InteriorList beyond;
+    const double eta = cross_surface(ctx.interiors, hit, beyond);
+
+    struct PendingReflection {
+        glm::dvec3 colour, normal;
+        double weight, exponent;
+    };
+    PendingReflection reflections[ResolvedLayers::kMax];
+    int n_reflections = 0;
+    glm::dvec3 top_reflectivity(0);
+    bool top_reflects = false;  // reflections[0] belongs to the top layer
+
+    RayColour out;
+    glm::dvec3 filter(1);
+    for (int i = 0; i < layers.count; ++i) {
+        const ResolvedLayer& layer = layers.layer[i];
+        const scene::Colour& c = layer.colour;
+        const glm::dvec3 rgb(c.r, c.g, c.b);
+        SurfaceSample s;
+        s.point = hit.point;
+        s.view = d;
+        s.normal = raw_n;  // normal perturbation is not implemented: Nl = N
+        s.colour = rgb;
+        s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
+        s.finish = layer.finish;
+        s.double_illuminate = double_illuminate;
+        out.rgb += filter * local_light(s, env_, ctx.interiors, state);
+
+        if (quality >= 8) {
+            const Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);
+            if (i == 0) top_reflectivity = r.colour, top_reflects = r.any();
+            if (r.any())
+                reflections[n_reflections++] = {r.colour * filter, s.normal,
+                                                ctx.weight * r.weight * std::fabs(grey(filter)),
+                                                layer.finish->reflection_exponent};
+        }
+        filter *= layer_filter(c);
+        if (std::fabs(grey(filter)) <= adc_bailout_) break;
+    }
+
+    // Transmission through the surface (refraction, continued rays, total internal reflection).
+    bool total_internal = false;
+    const scene::Finish& top = *layers.layer[0].finish;
+    glm::dvec3 f = filter;
+    if (top.conserve_energy) f *= glm::min(glm::dvec3(1), glm::dvec3(1) - top_reflectivity);
+    const double trans = std::min(1.0, std::fabs(grey(f)));
+    if (trans > adc_bailout_) {
+        Context child = ctx;
+        child.weight = ctx.weight * max_abs(f);
+        double child_depth = 0;
+        RayColour t;
+        glm::dvec3 fade(1);
+        const double refraction_eta = quality >= 6 ? eta : 1.0;
+        if (refraction_eta == 1.0) {
+            child.interiors = beyond;
+            child.continued = true;
+            t = trace(Ray{hit.point, d}, child, state, &child_depth);
+        } else {
+            const glm::dvec3 nl = raw_n;  // the top layer's shading normal
+            double n = glm::dot(d, nl);
+            glm::dvec3 ln;
+            if (n <= 0) {
+                ln = nl;
+                n = -n;
+            } else {
+                ln = -nl;
+            }
+            const double k = 1 + refraction_eta * refraction_eta * (n * n - 1);
+            if (k < 0) {
+                total_internal = true;
+                child.kind = RayKind::Reflection;
+                t = trace(Ray{hit.point, reflect_direction(d, nl, raw_n)}, child, state,
+                          &child_depth);
+            } else {
+                child.interiors = beyond;
+                const glm::dvec3 dir =
+                    glm::normalize(refraction_eta * d + (refraction_eta * n - std::sqrt(k)) * ln);
+                t = trace(Ray{hit.point, dir}, child, state, &child_depth);
+            }
+        }
+        if (!child.interiors.empty()) {
+            const scene::Interior* in = child.interiors.last().interior;
+            fade = interior_fade(in ? *in : default_interior(), child_depth, false);
+        }
+        out.rgb += total_internal ? fade * t.rgb : fade * t.rgb * f;
+        out.transmit = grey(fade) * t.transmit * trans;
+    }
+
+    // Reflection, per layer.
+    for (int i = 0; i < n_reflections; ++i) {
+        const PendingReflection& r = reflections[i];
+        if (total_internal && i == 0 && top_reflects) continue;  // TIR replaced it
+        Context child = ctx;
+        child.weight = r.weight;
+        child.kind = RayKind::Reflection;
+        double child_depth = 0;
+        RayColour rc = trace(Ray{hit.point, reflect_direction(d, r.normal, raw_n)}, child, state,
+                             &child_depth);
+        if (r.exponent != 1 && r.exponent != 0)
+            rc.rgb = glm::pow(glm::max(rc.rgb, glm::dvec3(0)), glm::dvec3(1 / r.exponent));
+        out.rgb += r.colour * rc.rgb;
+    }
+    return out;
+}
+
+RayColour Tracer::sky(const glm::dvec3& dir) const {
+    const scene::Colour& bg = scene_.background;
+    RayColour out;
+    // Without alpha output the background's transmit only darkens it.
+    out.rgb = glm::dvec3(bg.r, bg.g, bg.b) * (1 - bg.t);
+    out.transmit = options_.alpha ? (bg == scene::Colour{} ? 1.0 : bg.t) : 0.0;
+    if (!scene_.sky_sphere || scene_.sky_sphere->pigments.empty()) return out;
+    const scene::SkySphere& sky = *scene_.sky_sphere;
+    const glm::dvec3 p = sky.transform.is_identity() ? dir : sky.transform.inv_vector(dir);
+    // Layers like a texture: the last pigment is on top; the background shows through.
+    glm::dvec3 acc(0), filter(1);
+    for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
+        const scene::Colour c = evaluate_pigment(it->get(), p);
+        acc += filter * glm::dvec3(c.r, c.g, c.b) * (1 - c.f - c.t) * sky.emission;
+        filter *= layer_filter(c);
+    }
+    out.rgb = acc + filter * out.rgb;
+    out.transmit *= grey(filter);
+    return out;
+}
+
+void Tracer::apply_fog(RayColour& c, double depth, const InteriorList& interiors) const {
+    if (scene_.fogs.empty() || !interiors.empty()) return;
+    for (const scene::Fog& fog : scene_.fogs) {
+        if (fog.distance <= 0) continue;
+        // Constant fog; ground fog (type 2) is approximated by constant fog.
+        const double k = std::max(std::exp(-depth / fog.distance), fog.colour.t);
+        c.rgb = k * c.rgb + (1 - k) * glm::dvec3(fog.colour.r, fog.colour.g, fog.colour.b);
+        c.transmit *= k;
+    }
+}
+
+}  // namespace lumen::render

@@ -1,0 +1,57 @@
+// TraceRay (povray-semantics.md §3, §5, §7): nearest hit, layered shading, reflection,
+// refraction with interior lists, total internal reflection, fade, continued rays, sky and fog.
+#pragma once
+#include <vector>
+
+#include "render/interior_list.hpp"
+#include "render/intersector.hpp"
+#include "render/lights.hpp"
+#include "render/shading.hpp"
+#include "render/trace_state.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render {
+
+// Colour carried back along a ray: rgb in the working space plus the transmit (alpha) channel.
+struct RayColour {
+    glm::dvec3 rgb{0};
+    double transmit = 0;
+};
+
+struct TraceOptions {
+    int quality = 9;
+    bool alpha = false;  // +UA: the background is transparent
+};
+
+class Tracer {
+public:
+    // `scene` and `geometry` must outlive the tracer. Throws LumenError if the scene holds
+    // anything unsupported.
+    Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options);
+
+    // Colour seen along a camera ray.
+    RayColour trace_primary(const Ray& ray, ThreadState& state) const;
+
+private:
+    enum class RayKind { Image, Reflection, Other };
+    struct Context;  // one ray's level, weight, interiors and kind
+
+    RayColour trace(const Ray& ray, const Context& ctx, ThreadState& state, double* depth) const;
+    RayColour shade(const Ray& ray, const Hit& hit, const Context& ctx, ThreadState& state) const;
+    RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
+                           const Context& ctx, ThreadState& state) const;
+    RayColour sky(const glm::dvec3& dir) const;
+    void apply_fog(RayColour& c, double depth, const InteriorList& interiors) const;
+    bool find_hit(const Ray& ray, RayKind kind, Hit& hit) const;
+
+    const scene::Scene& scene_;
+    const Intersector& geometry_;
+    TraceOptions options_;
+    std::vector<LightSource> lights_;
+    LightingEnv env_;
+    int max_level_;
+    double adc_bailout_;
+    bool legacy_opacity_;
+};
+
+}  // namespace lumen::render

@@ -1,0 +1,190 @@
+// Whole-image checks of the tracer against POV-Ray 3.7 renders (render/testdata).
+#include <gtest/gtest.h>
+
+#include "parser/diagnostics.hpp"
+#include "render/shade_test_support.hpp"
+
+namespace lumen::render::test {
+namespace {
+
+constexpr int kW = 48, kH = 36;
+
+scene::Scene v1_scene(bool version_37) {
+    scene::Scene s = version_37 ? scene_37() : scene::Scene{};
+    s.camera.location = {0, 0, -5};
+    s.lights.push_back(point_light({0, 0, -100}, {1, 1, 1}));
+    s.objects.push_back(sphere({0, 0, 0}, 1, {rgb(1, 1, 1)}));
+    return s;
+}
+
+// The common stage of several references: camera <0,1,-5> looking at <0,0.5,0>.
+scene::Scene stage() {
+    scene::Scene s = scene_37();
+    s.camera = look_at_camera({0, 1, -5}, {0, 0.5, 0});
+    return s;
+}
+
+scene::Scene reflection_scene() {
+    scene::Scene s = stage();
+    s.lights.push_back(point_light({-4, 6, -5}, {1, 1, 1}));
+    s.background = rgb(0.2, 0.3, 0.5);
+    Material floor;
+    floor.pigment = checker(rgb(1, 1, 1), rgb(0.1, 0.1, 0.1));
+    s.objects.push_back(plane({0, 1, 0}, -1, floor));
+    Material gold{rgb(0.9, 0.7, 0.3)};
+    gold.finish.reflection_min = glm::dvec3(0.1);
+    gold.finish.reflection_max = glm::dvec3(0.9);
+    gold.finish.reflection_falloff = 2;
+    s.objects.push_back(sphere({-1, 0, 0}, 1, gold));
+    Material blue{rgb(0.3, 0.6, 0.9)};
+    blue.finish.reflection_min = blue.finish.reflection_max = glm::dvec3(0.5);
+    blue.finish.reflection_metallic = 1;
+    blue.finish.phong = 0.5;
+    s.objects.push_back(sphere({1.2, 0, 0.5}, 1, blue));
+    return s;
+}
+
+void expect_matches(const scene::Scene& s, const std::string& reference, int max_diff,
+                    RenderOptions opts = {}) {
+    const Image8 ours = render8(s, kW, kH, opts);
+    const Image8 pov = read_reference(reference);
+    ASSERT_EQ(pov.width, kW) << reference;
+    const Comparison c = compare(ours, pov);
+    EXPECT_LE(c.max_diff, max_diff) << reference << ": " << c.differing << " values differ";
+    EXPECT_GE(c.psnr, 45.0) << reference;
+}
+
+TEST(Tracer, DiffuseSphereCentreEncodesLikePovRay) {
+    // V1: linear 0.1 + 0.6·N·L ≈ 0.7 at the centre pixel.
+    EXPECT_EQ(render8(v1_scene(true), 64, 48).at(32, 24, 0), 218);
+    EXPECT_EQ(render8(v1_scene(false), 64, 48).at(32, 24, 0), 178);
+    scene::Scene g22 = v1_scene(true);
+    g22.globals.assumed_gamma = 2.2;
+    EXPECT_EQ(render8(g22, 64, 48).at(32, 24, 0), 180);
+}
+
+TEST(Tracer, DiffuseSphereMatchesWholeImage) {
+    expect_matches(v1_scene(true), "v1.ppm", 0);
+    expect_matches(v1_scene(false), "v1legacy.ppm", 0);
+}
+
+TEST(Tracer, PhongSpecularMetallicAndFadedLight) {
+    scene::Scene s = scene_37();
+    s.camera.location = {0, 0, -5};
+    s.lights.push_back(point_light({-3, 4, -6}, {1, 0.9, 0.8}));
+    scene::Light faded = point_light({4, 1, -3}, glm::dvec3(0.5));
+    faded.fade_distance = 4;
+    faded.fade_power = 2;
+    s.lights.push_back(faded);
+    Material red{rgb(0.8, 0.3, 0.2)};
+    red.finish.phong = 0.8;
+    red.finish.phong_size = 20;
+    s.objects.push_back(sphere({-1.1, 0, 0}, 1, red));
+    Material blue{rgb(0.2, 0.5, 0.9)};
+    blue.finish.specular = 0.7;
+    blue.finish.roughness = 0.02;
+    blue.finish.brilliance = 2;
+    blue.finish.metallic = 0.7;
+    s.objects.push_back(sphere({1.1, 0, 0}, 1, blue));
+    expect_matches(s, "hilite.ppm", 0);
+}
+
+TEST(Tracer, ReflectionFalloffAndMetallic) { expect_matches(reflection_scene(), "refl.ppm", 1); }
+
+TEST(Tracer, GlassFresnelTotalInternalReflectionAndFade) {
+    scene::Scene s = stage();
+    s.lights.push_back(point_light({-4, 6, -5}, {1, 1, 1}));
+    s.background = rgb(0.2, 0.3, 0.5);
+    Material floor;
+    floor.pigment = checker(rgb(1, 1, 1), rgb(0.1, 0.1, 0.1));
+    s.objects.push_back(plane({0, 1, 0}, -1, floor));
+    Material glass{{1, 1, 1, 0.9, 0}};
+    glass.finish.phong = 0.9;
+    glass.finish.reflection_min = glm::dvec3(0.05);
+    glass.finish.reflection_max = glm::dvec3(1);
+    glass.finish.fresnel = true;
+    glass.finish.conserve_energy = true;
+    glass.interior = scene::Interior{};
+    glass.interior->ior = 1.5;
+    s.objects.push_back(sphere({-1, 0, 0}, 1, glass));
+    Material tinted{{0.8, 1, 0.8, 0, 0.8}};
+    tinted.interior = scene::Interior{};
+    tinted.interior->ior = 1.3;
+    tinted.interior->fade_distance = 1;
+    tinted.interior->fade_power = 2;
+    tinted.interior->fade_colour = {0.5, 0.2, 0.2};
+    s.objects.push_back(sphere({1.2, 0, 0.5}, 1, tinted));
+    expect_matches(s, "glass.ppm", 1);
+}
+
+TEST(Tracer, ShadowsThroughFilterAndTransmit) {
+    scene::Scene s = stage();
+    s.lights.push_back(point_light({-2, 6, -3}, {1, 1, 1}));
+    s.objects.push_back(plane({0, 1, 0}, -1, {rgb(0.9, 0.9, 0.9)}));
+    s.objects.push_back(sphere({-1.2, 0, 0}, 0.8, {{0.5, 0.5, 0.5, 0, 0.5}}));
+    s.objects.push_back(sphere({1.2, 0, 0}, 0.8, {{1, 0.2, 0.2, 0.8, 0}}));
+    expect_matches(s, "shadow.ppm", 0);
+}
+
+TEST(Tracer, SpotlightAndShadowlessFadedLight) {
+    scene::Scene s = stage();
+    scene::Light spot = point_light({0, 5, -2}, glm::dvec3(1.5));
+    spot.type = scene::LightType::Spot;
+    spot.point_at = {0, -1, 1};
+    spot.radius = 15;
+    spot.falloff = 35;
+    spot.tightness = 5;
+    spot.fade_distance = 3;
+    spot.fade_power = 2;
+    s.lights.push_back(spot);
+    scene::Light fill = point_light({3, 3, -3}, {0.3, 0.3, 0.6});
+    fill.fade_distance = 1.5;
+    fill.fade_power = 1;
+    fill.shadowless = true;
+    s.lights.push_back(fill);
+    s.objects.push_back(plane({0, 1, 0}, -1, {rgb(0.9, 0.9, 0.9)}));
+    Material m{rgb(0.9, 0.5, 0.3)};
+    m.finish.phong = 0.6;
+    s.objects.push_back(sphere({0, 0, 1}, 1, m));
+    expect_matches(s, "spot.ppm", 0);
+}
+
+TEST(Tracer, AreaLight3x3) {
+    scene::Scene s = stage();
+    scene::Light l = point_light({-2, 5, -3}, {1, 1, 1});
+    l.area = scene::AreaLight{{2, 0, 0}, {0, 0, 2}, 3, 3};
+    s.lights.push_back(l);
+    s.objects.push_back(plane({0, 1, 0}, -1, {rgb(0.9, 0.9, 0.9)}));
+    s.objects.push_back(sphere({0, 0, 0}, 1, {rgb(0.9, 0.5, 0.3)}));
+    expect_matches(s, "area.ppm", 2);
+}
+
+TEST(Tracer, AntialiasMethod1WithoutJitter) {
+    RenderOptions o;
+    o.antialias = true;
+    o.aa_threshold = 0.1;
+    o.aa_method = 1;
+    o.aa_depth = 3;
+    o.jitter = false;
+    expect_matches(reflection_scene(), "refl_am1.ppm", 1, o);
+}
+
+TEST(Tracer, AntialiasMethod2WithoutJitter) {
+    RenderOptions o;
+    o.antialias = true;
+    o.aa_threshold = 0.1;
+    o.aa_method = 2;
+    o.aa_depth = 3;
+    o.jitter = false;
+    expect_matches(reflection_scene(), "refl_am2.ppm", 1, o);
+}
+
+TEST(Tracer, UnsupportedFeatureIsAnError) {
+    scene::Scene s = v1_scene(true);
+    s.unsupported.push_back({"isosurface", {}});
+    TestIntersector g(s);
+    EXPECT_THROW(Tracer(s, g, TraceOptions{}), lumen::LumenError);
+}
+
+}  // namespace
+}  // namespace lumen::render::test
