@@ -1,2 +1,6 @@
-// Placeholder until the command line lands.
-int main() { return 0; }
+// lumen: renders POV-Ray 3.7 scene files. See cli/run.hpp.
+#include "cli/run.hpp"
+
+int main(int argc, char** argv) {
+    return lumen::cli::run_command_line(std::vector<std::string>(argv + 1, argv + argc));
+}

@@ -1,0 +1,105 @@
+#include "cli/run.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <new>
+
+#include "cli/big_stack.hpp"
+#include "cli/command_line.hpp"
+#include "cli/frames.hpp"
+#include "cli/progress.hpp"
+#include "interp/dump_scene.hpp"
+#include "parser/diagnostics.hpp"
+#include "parser/parser.hpp"
+#include "render/image_output.hpp"
+
+namespace lumen::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+void print_diagnostic(const Diagnostic& d) { std::fputs(format_diagnostic(d).c_str(), stderr); }
+
+// --check: one line per unsupported feature; the exit status says whether there were any.
+int report_unsupported(const scene::Scene& scene) {
+    for (const scene::Unsupported& u : scene.unsupported)
+        std::printf("%s: error: '%s' is not supported yet\n", u.loc.str().c_str(),
+                    u.feature.c_str());
+    if (scene.unsupported.empty()) std::printf("no unsupported features\n");
+    return scene.unsupported.empty() ? 0 : 1;
+}
+
+void render_frame(const Options& o, const Frame& frame, const scene::Scene& scene,
+                  double parse_seconds) {
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    const std::string label = frame.number ? "frame " + std::to_string(frame.number) : "render";
+    ProgressBar bar(terminal, label);
+    render::RenderStats stats;
+    const auto start = Clock::now();
+    const render::Image image = render::render(scene, effective_render_options(o), &stats,
+                                               [&](double f) { bar.update(f); });
+    const double render_seconds = seconds_since(start);
+    bar.finish();
+    if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);
+    std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s\n",
+                 o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
+                 format_duration(parse_seconds).c_str(), image.width, image.height,
+                 format_duration(render_seconds).c_str(),
+                 static_cast<unsigned long long>(stats.total_rays),
+                 frame.output.empty() ? "no file written (-F)" : ("wrote " + frame.output).c_str());
+}
+
+}  // namespace
+
+int run_frames(const Options& o, SourceManager& sources) {
+    const interp::WarningSink warn = [](const Diagnostic& d) { print_diagnostic(d); };
+    for (const Frame& frame : plan_frames(o)) {
+        const auto start = Clock::now();
+        const scene::Scene scene = interp::interpret_file(sources, o.input, frame.scene, warn);
+        const double parse_seconds = seconds_since(start);
+        if (o.dump_scene) {
+            std::fputs(interp::dump_scene_json(scene).c_str(), stdout);
+            return 0;  // the first frame describes the scene
+        }
+        if (o.check) return report_unsupported(scene);
+        render_frame(o, frame, scene, parse_seconds);
+    }
+    return 0;
+}
+
+int run_command_line(const std::vector<std::string>& args) {
+    SourceManager sources;  // outlives every diagnostic, which points into its files
+    try {
+        const Options o = parse_command_line(args, sources);
+        if (o.help) {
+            std::fputs(usage_text().c_str(), stdout);
+            return 0;
+        }
+        if (o.version) {
+            std::printf("lumen %s (POV-Ray 3.7 scene language)\n", LUMEN_VERSION);
+            return 0;
+        }
+        for (const std::string& note : o.notes) std::fprintf(stderr, "%s\n", note.c_str());
+        int status = 0;
+        run_with_big_stack([&] { status = run_frames(o, sources); });
+        return status;
+    } catch (const LumenError& e) {
+        print_diagnostic(e.diag);
+    } catch (const parser::ParseError& e) {
+        print_diagnostic(Diagnostic{Severity::Error, e.loc, e.what(), e.hint, {}});
+    } catch (const std::bad_alloc&) {
+        std::fputs("lumen: error: out of memory\n", stderr);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lumen: error: %s\n", e.what());
+    }
+    return 1;
+}
+
+}  // namespace lumen::cli
