@@ -1,0 +1,132 @@
+// The BVH against brute force, and mesh performance.
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "render/bvh.hpp"
+#include "render/geometry_test_util.hpp"
+
+namespace lumen::render {
+namespace {
+
+using namespace testing;
+
+TEST(Bvh, VisitsEveryBoxTheRayMeets) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> u(-10, 10), s(0.01, 1);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 2000; ++i) {
+        glm::dvec3 c{u(rng), u(rng), u(rng)};
+        boxes.push_back({c - s(rng), c + s(rng)});
+    }
+    Bvh bvh;
+    bvh.build(boxes, 4);
+    EXPECT_LT(bvh.depth(), 40);
+    for (int r = 0; r < 300; ++r) {
+        glm::dvec3 o{u(rng), u(rng), u(rng)}, d = glm::normalize(glm::dvec3{u(rng), u(rng), u(rng)});
+        if (r % 10 == 0) d = {0, 0, 1};  // zero components
+        SlabRay slab(o, d);
+        std::vector<char> seen(boxes.size(), 0);
+        double tmax = 1e30;
+        bvh.traverse(slab, 0, tmax, [&](uint32_t i) { seen[bvh.order()[i]] = 1; });
+        size_t visited = 0;
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            if (slab.hits(boxes[i], 0, 1e30)) { EXPECT_TRUE(seen[i]) << r << " " << i; }
+            visited += seen[i];
+        }
+        EXPECT_LT(visited, boxes.size() / 4);  // culling works
+    }
+}
+
+// Nearest sphere by testing each one directly.
+double brute_nearest(const std::vector<scene::Sphere>& spheres, const Ray& r, int& which) {
+    double best = 1e30;
+    which = -1;
+    for (size_t i = 0; i < spheres.size(); ++i) {
+        glm::dvec3 oc = r.origin - spheres[i].center;
+        double b = glm::dot(oc, r.dir), c = glm::dot(oc, oc) - spheres[i].radius * spheres[i].radius;
+        double disc = b * b - c;
+        if (disc < 0) continue;
+        for (double t : {-b - std::sqrt(disc), -b + std::sqrt(disc)}) {
+            if (t > 1e-4 && t < best) {
+                best = t;
+                which = int(i);
+                break;
+            }
+        }
+    }
+    return best;
+}
+
+TEST(Bvh, ThousandRandomSpheresMatchBruteForce) {
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> u(-20, 20), rad(0.1, 1.5);
+    std::vector<scene::Sphere> spheres;
+    std::vector<scene::ObjectPtr> objects;
+    for (int i = 0; i < 1000; ++i) {
+        spheres.push_back({{u(rng), u(rng), u(rng)}, rad(rng)});
+        objects.push_back(make(spheres.back()));
+    }
+    Geometry g(scene_of(objects));
+    EXPECT_EQ(g.primitive_count(), 1000u);
+    int hits = 0;
+    for (int r = 0; r < 3000; ++r) {
+        Ray rr = ray({u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)});
+        int which;
+        double expect = brute_nearest(spheres, rr, which);
+        auto h = trace(g, rr);
+        ASSERT_EQ(bool(h), which >= 0) << r;
+        if (!h) continue;
+        ++hits;
+        EXPECT_NEAR(h->t, expect, 1e-9 * (1 + expect));
+        EXPECT_EQ(h->object, objects[which].get());
+    }
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(Bvh, HundredThousandTriangleMeshIsFast) {
+    // A bumpy height field of 224 x 224 quads = 100352 triangles.
+    const int n = 224;
+    scene::Mesh m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            double x = double(i) / n * 10 - 5, z = double(j) / n * 10 - 5;
+            m.vertices.push_back({x, 0.3 * std::sin(3 * x) * std::cos(2 * z), z});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            m.faces.push_back({{a, b, d}});
+            m.faces.push_back({{a, d, c}});
+        }
+    auto start = std::chrono::steady_clock::now();
+    Geometry g(scene_of({make(m)}));
+    double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(g.primitive_count(), 100352u);
+
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-4.5, 4.5);
+    const int rays = 100000;
+    int hits = 0;
+    start = std::chrono::steady_clock::now();
+    for (int r = 0; r < rays; ++r) {
+        Ray rr = ray({0.7 * u(rng), 3, 0.7 * u(rng)}, {u(rng) * 0.1, -1, u(rng) * 0.1});
+        Hit h;
+        if (g.intersect(rr, 1e-4, 1e30, h)) {
+            ++hits;
+            // The hit lies on the height field (within its linear interpolation error).
+            double fx = 0.3 * std::sin(3 * h.point.x) * std::cos(2 * h.point.z);
+            EXPECT_NEAR(h.point.y, fx, 0.01);
+        }
+    }
+    double trace_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(hits, rays);
+    EXPECT_LT(build, 2.0);
+    EXPECT_LT(trace_s, 1.0);  // ~log n per ray: about 10 us or less each
+    std::printf("100k-triangle mesh: build %.3f s, %d rays %.3f s\n", build, rays, trace_s);
+}
+
+}  // namespace
+}  // namespace lumen::render

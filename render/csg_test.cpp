@@ -1,0 +1,154 @@
+// CSG operations and modifiers with answers worked out by hand.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "render/geometry_test_util.hpp"
+
+namespace lumen::render {
+namespace {
+
+using namespace testing;
+using scene::CsgOp;
+
+// Two unit spheres overlapping around the origin: centres x = -0.5 and x = +0.5.
+std::vector<scene::ObjectPtr> pair() {
+    return {make(scene::Sphere{{-0.5, 0, 0}, 1}), make(scene::Sphere{{0.5, 0, 0}, 1})};
+}
+
+TEST(Csg, UnionKeepsInnerSurfacesMergeDropsThem) {
+    Geometry u(scene_of({csg(CsgOp::Union, pair())}));
+    Geometry m(scene_of({csg(CsgOp::Merge, pair())}));
+    Ray from_centre = ray({0, 0, 0}, {1, 0, 0});
+    auto hu = trace(u, from_centre);
+    auto hm = trace(m, from_centre);
+    ASSERT_TRUE(hu && hm);
+    EXPECT_NEAR(hu->t, 0.5, 1e-12);  // left sphere's far side, inside the right one
+    EXPECT_NEAR(hm->t, 1.5, 1e-12);  // merge: only the outer surface
+    auto outside = trace(m, ray({-5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(outside);
+    EXPECT_NEAR(outside->t, 3.5, 1e-12);
+}
+
+TEST(Csg, IntersectionIsTheLens) {
+    auto lens = csg(CsgOp::Intersection, pair());
+    Geometry g(scene_of({lens}));
+    auto h = trace(g, ray({-5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4.5, 1e-12);  // the right sphere's left side at x = -0.5
+    EXPECT_NEAR(h->normal.x, -1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({-5, 0.95, 0}, {1, 0, 0})));  // outside the lens' height
+    EXPECT_TRUE(Geometry::inside(*lens, {0, 0, 0}));
+    EXPECT_FALSE(Geometry::inside(*lens, {1, 0, 0}));
+}
+
+TEST(Csg, DifferenceFlipsTheSubtractedSurface) {
+    auto cube = make(scene::Box{{-1, -1, -1}, {1, 1, 1}});
+    auto hole = make(scene::Sphere{{0, 0, 0}, 0.5});
+    auto d = csg(CsgOp::Difference, {cube, hole});
+    Geometry g(scene_of({d}));
+    auto outer = trace(g, ray({-5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(outer);
+    EXPECT_NEAR(outer->t, 4, 1e-12);
+    auto in_hole = trace(g, ray({0, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(in_hole);
+    EXPECT_NEAR(in_hole->t, 0.5, 1e-12);
+    EXPECT_NEAR(in_hole->normal.x, -1, 1e-12);  // faces into the cavity
+    EXPECT_EQ(in_hole->object, hole.get());
+    EXPECT_TRUE(Geometry::inside(*d, {0.8, 0, 0}));
+    EXPECT_FALSE(Geometry::inside(*d, {0.2, 0, 0}));
+    // A cylinder drilled all the way through: rays down its axis pass.
+    auto drill = make(scene::Cylinder{{0, -2, 0}, {0, 2, 0}, 0.3, false});
+    Geometry gd(scene_of({csg(CsgOp::Difference, {cube, drill})}));
+    EXPECT_FALSE(trace(gd, ray({0, 5, 0}, {0, -1, 0})));
+    auto wall = trace(gd, ray({0.5, 5, 0}, {0, -1, 0}));
+    ASSERT_TRUE(wall);
+    EXPECT_NEAR(wall->t, 4, 1e-12);
+}
+
+TEST(Csg, DifferenceOfSeveral) {
+    // difference { A B C } = A minus B minus C.
+    auto a = make(scene::Box{{-3, -1, -1}, {3, 1, 1}});
+    auto b = make(scene::Sphere{{-2, 0, 0}, 0.5});
+    auto c = make(scene::Sphere{{2, 0, 0}, 0.5});
+    auto d = csg(CsgOp::Difference, {a, b, c});
+    EXPECT_FALSE(Geometry::inside(*d, {-2, 0, 0}));
+    EXPECT_FALSE(Geometry::inside(*d, {2, 0, 0}));
+    EXPECT_TRUE(Geometry::inside(*d, {0, 0, 0}));
+    Geometry g(scene_of({d}));
+    auto h = trace(g, ray({2, 0, 0}, {-1, 0, 0}));  // from inside C's hole
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 0.5, 1e-12);
+}
+
+TEST(Csg, InverseChildInIntersectionEqualsDifference) {
+    auto cube = make(scene::Box{{-1, -1, -1}, {1, 1, 1}});
+    auto hole = make(scene::Sphere{{0, 0, 0}, 0.5});
+    hole->inverse = true;
+    Geometry g(scene_of({csg(CsgOp::Intersection, {cube, hole})}));
+    auto h = trace(g, ray({0, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 0.5, 1e-12);
+    EXPECT_NEAR(h->normal.x, -1, 1e-12);
+    // Inverting the whole CSG flips every normal.
+    auto whole = csg(CsgOp::Intersection, pair());
+    whole->inverse = true;
+    Geometry gi(scene_of({whole}));
+    auto hi = trace(gi, ray({-5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(hi);
+    EXPECT_NEAR(hi->normal.x, 1, 1e-12);
+    EXPECT_FALSE(Geometry::inside(*whole, {0, 0, 0}));
+}
+
+TEST(Csg, ClippedByLeavesAnOpenShell) {
+    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    s->clipped_by = {make(scene::Plane{{0, 1, 0}, 0})};  // keep y < 0
+    Geometry g(scene_of({s}));
+    auto down = trace(g, ray({0, 5, 0}, {0, -1, 0}));
+    ASSERT_TRUE(down);
+    EXPECT_NEAR(down->t, 6, 1e-12);  // through the open top to the bottom inside
+    EXPECT_NEAR(down->normal.y, -1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));
+    auto low = trace(g, ray({-5, -0.5, 0}, {1, 0, 0}));
+    ASSERT_TRUE(low);
+    EXPECT_NEAR(low->t, 5 - std::sqrt(0.75), 1e-12);
+    EXPECT_FALSE(Geometry::inside(*s, {0, 0.5, 0}));
+    EXPECT_TRUE(Geometry::inside(*s, {0, -0.5, 0}));
+}
+
+TEST(Csg, ClippedUnionPushesTheClipToChildren) {
+    auto u = csg(CsgOp::Union, pair());
+    u->clipped_by = {make(scene::Box{{-5, -5, -5}, {0, 5, 5}})};  // keep x < 0
+    Geometry g(scene_of({u}));
+    auto h = trace(g, ray({5, 0, 0}, {-1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 5.5, 1e-12);  // right sphere's far side at x = -0.5
+}
+
+TEST(Csg, BoundedBySkipsRaysMissingTheBound) {
+    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    s->bounded_by = {make(scene::Box{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}})};
+    Geometry g(scene_of({s}));
+    EXPECT_FALSE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));
+    auto h = trace(g, ray({-5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4, 1e-12);
+}
+
+TEST(Csg, NestedWithTransforms) {
+    // union { difference { box, sphere } translate x*10 } rotate y*90: cube centre at (0,0,-10).
+    auto d = csg(CsgOp::Difference, {make(scene::Box{{-1, -1, -1}, {1, 1, 1}}),
+                                     make(scene::Sphere{{0, 0, 0}, 0.5})});
+    d->transform = translate({10, 0, 0});
+    auto u = csg(CsgOp::Union, {d});
+    u->transform = rotate(90, {0, 1, 0});
+    Geometry g(scene_of({u}));
+    auto h = trace(g, ray({0, 0, -10}, {1, 0, 0}));  // from the cavity centre
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 0.5, 1e-9);
+    EXPECT_NEAR(h->normal.x, -1, 1e-9);
+    EXPECT_TRUE(Geometry::inside(*u, {0.8, 0, -10}));
+}
+
+}  // namespace
+}  // namespace lumen::render

@@ -1,0 +1,304 @@
+// Per-shape robustness: stable roots, grazing rays, parallel rays, degenerate input.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "render/geometry_test_util.hpp"
+#include "render/shapes.hpp"
+
+namespace lumen::render {
+namespace {
+
+using namespace testing;
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+TEST(Sphere, HitAndNormal) {
+    Geometry g(scene_of({make(scene::Sphere{{0, 0, 5}, 1})}));
+    auto h = trace(g, ray({0, 0, 0}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 4);
+    EXPECT_NEAR(h->normal.z, -1, 1e-15);
+    EXPECT_FALSE(trace(g, ray({0, 0, 0}, {0, 1, 0})));
+}
+
+TEST(Sphere, FarAwayKeepsRelativePrecision) {
+    const double d = 1e6;
+    Geometry g(scene_of({make(scene::Sphere{{0, 0, d}, 1})}));
+    auto h = trace(g, ray({0, 0, 0}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, d - 1, (d - 1) * 1e-9);
+    // Off-centre: exact answer d - sqrt(1 - 0.6^2) = d - 0.8.
+    auto h2 = trace(g, ray({0.6, 0, 0}, {0, 0, 1}));
+    ASSERT_TRUE(h2);
+    EXPECT_NEAR(h2->t, d - 0.8, d * 1e-9);
+    EXPECT_NEAR(h2->normal.x, 0.6, 1e-6);
+}
+
+TEST(Sphere, GrazingRaysGiveNoNaN) {
+    Geometry g(scene_of({make(scene::Sphere{{0, 0, 0}, 1})}));
+    for (double y : {1 - 1e-12, 1.0, 1 + 1e-12, std::nextafter(1.0, 2.0)}) {
+        Hit h;
+        bool hit = g.intersect(ray({-5, y, 0}, {1, 0, 0}), 1e-4, 1e30, h);
+        if (hit) {
+            EXPECT_TRUE(std::isfinite(h.t));
+            EXPECT_TRUE(finite(h.normal));
+            EXPECT_NEAR(glm::length(h.normal), 1, 1e-9);
+        }
+        if (y > 1) { EXPECT_FALSE(hit); }
+    }
+    EXPECT_TRUE(trace(g, ray({-5, 1 - 1e-9, 0}, {1, 0, 0})));
+}
+
+TEST(Sphere, RayLeavingFromSurfaceSkipsItsOrigin) {
+    Geometry g(scene_of({make(scene::Sphere{{0, 0, 0}, 1})}));
+    // From the surface outward: nothing; inward: the far side at 2.
+    EXPECT_FALSE(trace(g, ray({0, 0, -1}, {0, 0, -1})));
+    auto h = trace(g, ray({0, 0, -1}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 2, 1e-12);
+    EXPECT_NEAR(h->normal.z, 1, 1e-12);  // outward, not towards the ray
+}
+
+TEST(Plane, ParallelRaysMissWithoutNaN) {
+    Geometry g(scene_of({make(scene::Plane{{0, 1, 0}, 0})}));
+    EXPECT_FALSE(trace(g, ray({0, 1, 0}, {1, 0, 0})));
+    EXPECT_FALSE(trace(g, ray({0, 0, 0}, {1, 0, 0})));  // in the plane
+    auto h = trace(g, ray({0, 2, 0}, {0, -1, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 2 * std::sqrt(2.0), 1e-12);
+    EXPECT_EQ(h->normal, glm::dvec3(0, 1, 0));
+}
+
+TEST(Plane, DistanceAlongUnnormalisedNormal) {
+    // plane { <0,2,0>, 3 }: n is normalised, d is not divided: y = 3.
+    Geometry g(scene_of({make(scene::Plane{{0, 2, 0}, 3})}));
+    auto h = trace(g, ray({0, 10, 0}, {0, -1, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 7, 1e-12);
+    EXPECT_TRUE(Geometry::inside(*make(scene::Plane{{0, 1, 0}, 0}), {0, -1, 0}));
+    EXPECT_FALSE(Geometry::inside(*make(scene::Plane{{0, 1, 0}, 0}), {0, 1, 0}));
+}
+
+TEST(Box, FacesAndNormals) {
+    Geometry g(scene_of({make(scene::Box{{1, 1, 1}, {-1, -1, -1}})}));  // corners reordered
+    auto h = trace(g, ray({0, 0, -5}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4, 1e-12);
+    EXPECT_EQ(h->normal, glm::dvec3(0, 0, -1));
+    auto inside_hit = trace(g, ray({0, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(inside_hit);
+    EXPECT_NEAR(inside_hit->t, 1, 1e-12);
+    EXPECT_EQ(inside_hit->normal, glm::dvec3(1, 0, 0));
+    auto diag = trace(g, ray({-5, 0.5, 0.5}, {1, 0, 0}));
+    ASSERT_TRUE(diag);
+    EXPECT_EQ(diag->normal, glm::dvec3(-1, 0, 0));
+}
+
+TEST(Box, GrazingAlongAFaceIsConsistent) {
+    Geometry g(scene_of({make(scene::Box{{-1, -1, -1}, {1, 1, 1}})}));
+    // Rays in the plane y = 1 (exactly on the top face), zero y direction component.
+    for (double x0 : {-5.0, -3.0}) {
+        Hit h;
+        bool hit = g.intersect(ray({x0, 1, 0}, {1, 0, 0}), 1e-4, 1e30, h);
+        if (hit) {
+            EXPECT_TRUE(std::isfinite(h.t));
+            EXPECT_TRUE(finite(h.normal));
+            EXPECT_NEAR(h.t, -1 - x0, 1e-12);
+        }
+        Hit h2;
+        EXPECT_EQ(hit, g.intersect(ray({x0, 1, 0.5}, {1, 0, 0}), 1e-4, 1e30, h2));
+    }
+    // Along an edge and through a corner.
+    Hit h;
+    if (g.intersect(ray({-5, 1, 1}, {1, 0, 0}), 1e-4, 1e30, h)) { EXPECT_TRUE(finite(h.normal)); }
+    auto corner = trace(g, ray({-2, -2, -2}, {1, 1, 1}));
+    ASSERT_TRUE(corner);
+    EXPECT_NEAR(corner->t, std::sqrt(3.0), 1e-12);
+    EXPECT_TRUE(finite(corner->normal));
+}
+
+TEST(Cylinder, CappedAndOpen) {
+    scene::Cylinder c{{0, 0, 0}, {0, 2, 0}, 0.5, false};
+    Geometry capped(scene_of({make(c)}));
+    auto side = trace(capped, ray({-5, 1, 0}, {1, 0, 0}));
+    ASSERT_TRUE(side);
+    EXPECT_NEAR(side->t, 4.5, 1e-12);
+    EXPECT_NEAR(side->normal.x, -1, 1e-12);
+    auto cap = trace(capped, ray({0.1, 5, 0}, {0, -1, 0}));
+    ASSERT_TRUE(cap);
+    EXPECT_NEAR(cap->t, 3, 1e-12);
+    EXPECT_NEAR(cap->normal.y, 1, 1e-12);
+    c.open = true;
+    Geometry open(scene_of({make(c)}));
+    auto through = trace(open, ray({0.1, 5, 0}, {0, -1, 0}));
+    EXPECT_FALSE(through);  // straight down the open tube
+    auto inner = trace(open, ray({0, 1, 0}, {1, 0, 0}));
+    ASSERT_TRUE(inner);
+    EXPECT_NEAR(inner->t, 0.5, 1e-12);
+    EXPECT_TRUE(Geometry::inside(*make(c), {0.2, 1, 0}));
+    EXPECT_FALSE(Geometry::inside(*make(c), {0.2, 2.5, 0}));
+}
+
+TEST(Cylinder, ArbitraryAxis) {
+    scene::Cylinder c{{1, 1, 1}, {3, 3, 3}, 0.5, false};
+    Geometry g(scene_of({make(c)}));
+    // Along the axis from outside: hits the base cap at distance |(1,1,1)| from the origin.
+    auto h = trace(g, ray({0, 0, 0}, {1, 1, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, std::sqrt(3.0), 1e-12);
+    EXPECT_NEAR(glm::dot(h->normal, glm::normalize(glm::dvec3(-1, -1, -1))), 1, 1e-12);
+}
+
+TEST(Cone, SideCapsAndApex) {
+    scene::Cone c{{0, 0, 0}, 1, {0, 1, 0}, 0, false};
+    Geometry g(scene_of({make(c)}));
+    auto h = trace(g, ray({-5, 0.5, 0}, {1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4.5, 1e-12);  // radius 0.5 at half height
+    EXPECT_NEAR(h->normal.x, -std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(h->normal.y, std::sqrt(0.5), 1e-12);
+    auto base = trace(g, ray({0.2, -3, 0}, {0, 1, 0}));
+    ASSERT_TRUE(base);
+    EXPECT_NEAR(base->t, 3, 1e-12);
+    EXPECT_NEAR(base->normal.y, -1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({-5, 1.5, 0}, {1, 0, 0})));  // above the apex: the other nappe
+    EXPECT_TRUE(Geometry::inside(*make(c), {0.2, 0.5, 0}));
+    EXPECT_FALSE(Geometry::inside(*make(c), {0.6, 0.5, 0}));
+}
+
+// Brute-force reference for the torus: sample the implicit function along the ray.
+double first_root_by_scan(double R, double r, const Ray& ray, double tmax) {
+    auto f = [&](double t) {
+        glm::dvec3 p = ray.at(t);
+        double g = glm::dot(p, p) + R * R - r * r;
+        return g * g - 4 * R * R * (p.x * p.x + p.z * p.z);
+    };
+    const int steps = 200000;
+    double prev = f(1e-4);
+    for (int i = 1; i <= steps; ++i) {
+        double t = 1e-4 + tmax * i / steps;
+        double v = f(t);
+        if ((v < 0) != (prev < 0)) return t;
+        prev = v;
+    }
+    return -1;
+}
+
+TEST(Torus, MatchesBruteForceRootSearch) {
+    const double R = 2, r = 0.5;
+    Geometry g(scene_of({make(scene::Torus{R, r, false})}));
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0;
+    for (int i = 0; i < 60; ++i) {
+        glm::dvec3 o{u(rng) * 6, u(rng) * 3, u(rng) * 6};
+        glm::dvec3 target{u(rng) * 2.5, u(rng) * 0.6, u(rng) * 2.5};
+        Ray rr = ray(o, target - o);
+        double expected = first_root_by_scan(R, r, rr, 15);
+        auto h = trace(g, rr);
+        if (expected < 0) {
+            EXPECT_FALSE(h) << i;
+            continue;
+        }
+        ASSERT_TRUE(h) << i;
+        ++hits;
+        EXPECT_NEAR(h->t, expected, 15.0 / 200000 * 1.01) << i;
+        // The normal points away from the tube centre.
+        glm::dvec3 ring = glm::normalize(glm::dvec3(h->point.x, 0, h->point.z)) * R;
+        EXPECT_NEAR(glm::dot(h->normal, glm::normalize(h->point - ring)), 1, 1e-9);
+    }
+    EXPECT_GT(hits, 20);
+}
+
+TEST(Torus, GrazingTopAndDistantRays) {
+    const double R = 2, r = 0.5;
+    Geometry g(scene_of({make(scene::Torus{R, r, false})}));
+    // Just under the top of the tube: two close roots near x = -2; tangent: finite or none.
+    auto under = trace(g, ray({-10, r - 1e-7, 0}, {1, 0, 0}));
+    ASSERT_TRUE(under);
+    EXPECT_NEAR(under->t, 8, 1e-3);
+    EXPECT_TRUE(finite(under->normal));
+    Hit h;
+    if (g.intersect(ray({-10, r, 0}, {1, 0, 0}), 1e-4, 1e30, h)) { EXPECT_TRUE(finite(h.normal)); }
+    EXPECT_FALSE(trace(g, ray({-10, r + 1e-7, 0}, {1, 0, 0})));
+    // From far away along x: first hit at the outer equator.
+    auto far = trace(g, ray({-1e5, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(far);
+    EXPECT_NEAR(far->t, 1e5 - 2.5, 1e-6);
+    // Through the hole along y: nothing.
+    EXPECT_FALSE(trace(g, ray({0, 10, 0}, {0, -1, 0})));
+    EXPECT_TRUE(Geometry::inside(*make(scene::Torus{R, r, false}), {2.2, 0.1, 0}));
+    EXPECT_FALSE(Geometry::inside(*make(scene::Torus{R, r, false}), {0, 0, 0}));
+}
+
+TEST(Disc, HoleAndRadius) {
+    Geometry g(scene_of({make(scene::Disc{{0, 0, 0}, {0, 0, 1}, 1, 0.5})}));
+    EXPECT_FALSE(trace(g, ray({0, 0, -1}, {0, 0, 1})));      // in the hole
+    EXPECT_FALSE(trace(g, ray({1.2, 0, -1}, {0, 0, 1})));    // outside
+    auto h = trace(g, ray({0.7, 0, -1}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 1, 1e-12);
+    EXPECT_FALSE(Geometry::inside(*make(scene::Disc{}), {0, -0.1, 0}));  // no inside
+}
+
+TEST(Triangle, TwoSidedFlatAndSmooth) {
+    scene::Triangle t;
+    t.p = {glm::dvec3{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    Geometry g(scene_of({make(t)}));
+    auto front = trace(g, ray({0.2, 0.2, -1}, {0, 0, 1}));
+    auto back = trace(g, ray({0.2, 0.2, 1}, {0, 0, -1}));
+    ASSERT_TRUE(front && back);
+    EXPECT_NEAR(front->t, 1, 1e-12);
+    EXPECT_EQ(front->normal, back->normal);  // not flipped towards the ray
+    EXPECT_NEAR(std::abs(front->normal.z), 1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({0.6, 0.6, -1}, {0, 0, 1})));
+    t.smooth = true;
+    t.n = {glm::dvec3{0, 0, 1}, glm::normalize(glm::dvec3{1, 0, 1}), glm::normalize(glm::dvec3{0, 1, 1})};
+    Geometry gs(scene_of({make(t)}));
+    auto s = trace(gs, ray({0.5, 0, -1}, {0, 0, 1}));  // halfway between vertices 0 and 1
+    ASSERT_TRUE(s);
+    EXPECT_NEAR(glm::length(s->normal), 1, 1e-12);
+    glm::dvec3 expect = glm::normalize(glm::dvec3(0, 0, 1) + glm::normalize(glm::dvec3{1, 0, 1}));
+    EXPECT_NEAR(glm::dot(s->normal, expect), 1, 1e-12);
+}
+
+TEST(Triangle, DegenerateIsSkipped) {
+    scene::Triangle t;
+    t.p = {glm::dvec3{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};  // collinear: zero area
+    scene::Triangle n;
+    n.p = {glm::dvec3{0, 0, 0}, {NAN, 0, 0}, {0, 1, 0}};
+    Geometry g(scene_of({make(t), make(n), make(scene::Sphere{{0, 0, 0}, 0})}));
+    EXPECT_FALSE(trace(g, ray({1, 1, 0}, {0, 0, 1})));
+    EXPECT_FALSE(trace(g, ray({-1, 0, -0.5}, {1, 0.5, 1})));
+    EXPECT_FALSE(trace(g, ray({0, 0, -1}, {0, 0, 1})));
+}
+
+TEST(Polygon, EvenOddWithHole) {
+    // A 4x4 square with a 2x2 square hole, sub-polygons closed by repeating their first point.
+    scene::Polygon p;
+    p.points = {{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, {-2, -2, 0},
+                {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},  {-1, 1, 0}, {-1, -1, 0}};
+    Geometry g(scene_of({make(p)}));
+    EXPECT_FALSE(trace(g, ray({0, 0, -1}, {0, 0, 1})));    // the hole
+    EXPECT_FALSE(trace(g, ray({3, 0, -1}, {0, 0, 1})));    // outside
+    auto h = trace(g, ray({1.5, 0.3, -1}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 1, 1e-12);
+    EXPECT_NEAR(std::abs(h->normal.z), 1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({1.5, 0.3, 0}, {1, 0, 0})));  // parallel, in plane
+}
+
+TEST(Polygon, TiltedConcave) {
+    // An L shape in the plane x + z = 1 (projection must drop a dominant axis correctly).
+    scene::Polygon p;
+    p.points = {{0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {0.5, 1, 0.5}, {0.5, 0.5, 0.5}, {0, 0.5, 1}, {0, 0, 1}};
+    Geometry g(scene_of({make(p)}));
+    EXPECT_TRUE(trace(g, ray({-1, 0.25, -1}, {1, 0, 1})));   // the foot
+    EXPECT_FALSE(trace(g, ray({-1, 0.75, -0.5}, {1, 0, 1})));  // notch of the L (x = 0.25)
+    EXPECT_TRUE(trace(g, ray({-0.5, 0.75, -1}, {1, 0, 1})));   // upright (x = 0.75)
+}
+
+}  // namespace
+}  // namespace lumen::render
