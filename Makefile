@@ -1,0 +1,41 @@
+# Thin wrapper around CMake/CTest. `make render` and `make test` are all a newcomer needs.
+BUILD ?= build
+FUZZ_BUILD ?= build-fuzz
+JOBS ?= 2
+FUZZ_SECONDS ?= 600
+WERROR := $(if $(filter true,$(CI)),ON,OFF)
+
+.PHONY: all deps configure build render test fuzz bench clean
+
+all: build
+
+deps:
+	@tools/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DLUMEN_WERROR=$(WERROR) >/dev/null
+
+build: configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+render: configure
+	cmake --build $(BUILD) --target lumen -j$(JOBS)
+	$(BUILD)/lumen examples/showcase.pov +W640 +H480 +A0.3 +O$(BUILD)/showcase.png
+	@echo "showcase image: $(abspath $(BUILD))/showcase.png"
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+fuzz: deps
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	    -DLUMEN_FUZZ=ON -DLUMEN_TESTS=OFF >/dev/null
+	cmake --build $(FUZZ_BUILD) --target parse_fuzz -j$(JOBS)
+	tests/fuzz/run.sh $(FUZZ_BUILD)/tests/fuzz/parse_fuzz $(FUZZ_SECONDS)
+
+bench: configure
+	cmake --build $(BUILD) --target lumen parse_includes -j$(JOBS)
+	$(BUILD)/bench/parse_includes
+	bench/render_vs_povray.sh $(BUILD)/lumen
+
+clean:
+	rm -rf $(BUILD) $(FUZZ_BUILD)
