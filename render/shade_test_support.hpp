@@ -185,7 +185,9 @@ inline Image8 render8(const scene::Scene& s, int w, int h, RenderOptions opts = 
 
 // Reads a binary PPM (skipping POV's '#' comment lines) from render/testdata.
 inline Image8 read_reference(const std::string& name) {
-    std::ifstream in(std::string(LUMEN_SOURCE_DIR) + "/render/testdata/" + name, std::ios::binary);
+    const std::string path =
+        name.starts_with("/") ? name : std::string(LUMEN_SOURCE_DIR) + "/render/testdata/" + name;
+    std::ifstream in(path, std::ios::binary);
     std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     size_t i = 0;
     std::vector<std::string> fields;

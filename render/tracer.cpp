@@ -25,11 +25,6 @@ double max_abs(const glm::dvec3& c) {
     return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
 }
 
-const scene::Interior& default_interior() {
-    static const scene::Interior interior;
-    return interior;
-}
-
 double ior_of(const scene::Interior* in) { return in ? in->ior : 1.0; }
 
 // Where a ray goes when it crosses the surface of `hit`'s object: the new interior list and
@@ -251,10 +246,10 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
                 t = trace(Ray{hit.point, dir}, child, state, &child_depth);
             }
         }
-        if (!child.interiors.empty()) {
-            const scene::Interior* in = child.interiors.last().interior;
-            fade = interior_fade(in ? *in : default_interior(), child_depth, false);
-        }
+        // Fade: the incoming ray crossed this object's interior for hit.t (only the light
+        // passing through is faded, not the surface's own colour).
+        if (hit.interior && ctx.interiors.find(hit.interior_id) >= 0)
+            fade = interior_fade(*hit.interior, hit.t, false);
         out.rgb += total_internal ? fade * t.rgb : fade * t.rgb * f;
         out.transmit = grey(fade) * t.transmit * trans;
     }

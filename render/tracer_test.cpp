@@ -179,6 +179,30 @@ TEST(Tracer, AntialiasMethod2WithoutJitter) {
     expect_matches(reflection_scene(), "refl_am2.ppm", 1, o);
 }
 
+TEST(Tracer, MaxTraceLevelBetweenFacingMirrors) {
+    // Two mirrors (reflection 0.5, ambient 0.5, diffuse 0) facing each other; values from
+    // povray 3.7 with max_trace_level 2, 5 and 10 (#version 3.7, assumed_gamma 1).
+    auto mirrors = [](int level) {
+        scene::Scene s = scene_37();
+        s.camera.location = {0, 0, -5};
+        s.globals.max_trace_level = level;
+        Material m{rgb(1, 0.5, 0)};
+        m.finish.ambient = glm::dvec3(0.5);
+        m.finish.diffuse = 0;
+        m.finish.reflection_min = m.finish.reflection_max = glm::dvec3(0.5);
+        s.objects.push_back(plane({0, 0, 1}, 2, m));
+        s.objects.push_back(plane({0, 0, 1}, -8, m));
+        return render8(s, 8, 6);
+    };
+    const Image8 two = mirrors(2), five = mirrors(5), ten = mirrors(10);
+    EXPECT_EQ(two.at(4, 3, 0), 225);
+    EXPECT_EQ(two.at(4, 3, 1), 165);
+    EXPECT_EQ(five.at(4, 3, 0), 251);
+    EXPECT_EQ(five.at(4, 3, 1), 185);
+    EXPECT_EQ(ten.at(4, 3, 0), 255);
+    EXPECT_EQ(ten.at(4, 3, 1), 187);
+}
+
 TEST(Tracer, UnsupportedFeatureIsAnError) {
     scene::Scene s = v1_scene(true);
     s.unsupported.push_back({"isosurface", {}});

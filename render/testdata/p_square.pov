@@ -1,0 +1,2 @@
+camera { orthographic location <0,10,0> direction -y up z*4 right x*4 }
+plane { y, 0 pigment { square } finish { ambient 1 diffuse 0 } }
