@@ -1,0 +1,83 @@
+// background, fog and sky_sphere (povray-semantics.md §7.4).
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+scene::Colour build_background(ItemCursor& cur) {
+    scene::Colour c = cur.expect_colour("");
+    if (!cur.at_end()) cur.fail_unexpected(cur.peek(), {});
+    // Without alpha output the background's rgb is premultiplied by its opacity.
+    c.r *= 1.0 - c.t;
+    c.g *= 1.0 - c.t;
+    c.b *= 1.0 - c.t;
+    return c;
+}
+
+scene::Fog build_fog(ItemCursor& cur) {
+    static const std::vector<std::string> keywords = {
+        "fog_type", "distance", "color", "colour", "turbulence", "turb_depth", "omega", "lambda",
+        "octaves", "fog_offset", "fog_alt", "up", "translate", "rotate", "scale", "matrix",
+        "transform"};
+    scene::Fog fog;
+    if (cur.next_is<std::shared_ptr<const scene::Fog>>())
+        fog = *cur.next().value.as<std::shared_ptr<const scene::Fog>>();
+    fog.loc = cur.block_loc();
+    while (!cur.at_end()) {
+        if (cur.next_is_colour_like()) {  // `fog { rgb <...> }` without the colour keyword
+            fog.colour = cur.expect_colour("");
+            continue;
+        }
+        const Item& item = cur.next();
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {
+            fog.transform = fog.transform.then(t);
+            continue;
+        }
+        if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, keywords);
+        const std::string& w = item.keyword;
+        if (w == "fog_type") {
+            fog.type = cur.expect_int(w);
+            if (fog.type != 1 && fog.type != 2) cur.fail(item.loc, "fog_type must be 1 or 2");
+        } else if (w == "distance") fog.distance = cur.expect_float(w);
+        else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
+                 w == "rgbft") {
+            fog.colour = cur.expect_colour(w);
+        } else if (w == "turbulence") {
+            fog.turbulence = cur.expect_vector(w);
+            if (!fog.unsupported) fog.unsupported = scene::Unsupported{"fog turbulence", item.loc};
+        } else if (w == "turb_depth") fog.turb_depth = cur.expect_float(w);
+        else if (w == "omega" || w == "lambda") cur.expect_float(w);
+        else if (w == "octaves") cur.expect_int(w);
+        else if (w == "fog_offset") fog.offset = cur.expect_float(w);
+        else if (w == "fog_alt") fog.alt = cur.expect_float(w);
+        else if (w == "up") fog.up = cur.expect_vector(w);
+        else cur.fail_unexpected(item, keywords);
+    }
+    return fog;
+}
+
+scene::SkySphere build_sky_sphere(ItemCursor& cur) {
+    static const std::vector<std::string> keywords = {"pigment", "emission", "translate",
+                                                      "rotate", "scale", "matrix", "transform"};
+    scene::SkySphere sky;
+    if (cur.next_is<std::shared_ptr<const scene::SkySphere>>())
+        sky = *cur.next().value.as<std::shared_ptr<const scene::SkySphere>>();
+    sky.loc = cur.block_loc();
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {  // pigments are evaluated in the sky's space
+            sky.transform = sky.transform.then(t);
+        } else if (item.kind == Item::Kind::Value && item.value.is<scene::PigmentPtr>()) {
+            sky.pigments.push_back(item.value.as<scene::PigmentPtr>());
+        } else if (item.kind == Item::Kind::Keyword && item.keyword == "emission") {
+            if (cur.next_is_float()) sky.emission = cur.expect_float("emission");
+            else sky.emission = cur.expect_colour("emission").r;
+        } else {
+            cur.fail_unexpected(item, keywords);
+        }
+    }
+    return sky;
+}
+
+}  // namespace lumen::interp

@@ -1,0 +1,124 @@
+// camera { } with POV's fix-up order (povray-semantics.md §1.2), so the renderer only maps
+// pixels to rays.
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+const std::vector<std::string>& camera_keywords() {
+    static const std::vector<std::string> k = [] {
+        std::vector<std::string> v = transform_keywords();
+        for (const char* w : {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
+                              "omnimax", "panoramic", "spherical", "cylinder", "mesh_camera",
+                              "location", "direction", "up", "right", "sky", "look_at", "angle",
+                              "focal_point", "aperture", "blur_samples", "confidence",
+                              "variance", "normal"})
+            v.push_back(w);
+        return v;
+    }();
+    return k;
+}
+
+bool is_other_camera_type(const std::string& w) {
+    return w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
+           w == "spherical" || w == "cylinder" || w == "mesh_camera";
+}
+
+}  // namespace
+
+scene::Camera build_camera(ItemCursor& cur) {
+    scene::Camera cam;
+    if (cur.next_is<std::shared_ptr<const scene::Camera>>())
+        cam = *cur.next().value.as<std::shared_ptr<const scene::Camera>>();
+    cam.loc = cur.block_loc();
+    glm::dvec3 sky{0, 1, 0}, look_at{0, 0, 1};
+    bool have_look_at = false, have_up = false, have_right = false;
+    std::optional<double> angle;
+    SourceLoc angle_loc;
+    scene::Transform transform;
+    auto unsupported = [&](const std::string& f, SourceLoc loc) {
+        if (!cam.unsupported) cam.unsupported = scene::Unsupported{f, loc};
+    };
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {  // gathered and applied last (step 5)
+            transform = transform.then(t);
+            continue;
+        }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::NormalPtr>()) {
+            unsupported("camera normal", item.loc);
+            continue;
+        }
+        if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, camera_keywords());
+        const std::string& w = item.keyword;
+        if (w == "perspective") cam.type = scene::CameraType::Perspective;
+        else if (w == "orthographic") cam.type = scene::CameraType::Orthographic;
+        else if (is_other_camera_type(w)) {
+            cam.type = scene::CameraType::Other;
+            if (w == "cylinder") cur.expect_int(w);
+            unsupported("camera '" + w + "'", item.loc);
+        } else if (w == "location") cam.location = cur.expect_vector(w);
+        else if (w == "direction") cam.direction = cur.expect_vector(w);
+        else if (w == "up") { cam.up = cur.expect_vector(w); have_up = true; }
+        else if (w == "right") { cam.right = cur.expect_vector(w); have_right = true; }
+        else if (w == "sky") sky = cur.expect_vector(w);
+        else if (w == "look_at") { look_at = cur.expect_vector(w); have_look_at = true; }
+        else if (w == "angle") { angle = cur.expect_float(w); angle_loc = item.loc; }
+        else if (w == "focal_point") cur.expect_vector(w);
+        else if (w == "aperture") {
+            if (cur.expect_float(w) > 0) unsupported("focal blur", item.loc);
+        } else if (w == "blur_samples") {
+            cur.expect_float(w);
+            cur.optional_float();
+        } else if (w == "confidence" || w == "variance") cur.expect_float(w);
+        else cur.fail_unexpected(item, camera_keywords());
+    }
+    // Step 2: angle is the full horizontal field of view along `right`.
+    if (angle && cam.type != scene::CameraType::Other) {
+        if (!(*angle > 0 && *angle < 180))
+            cur.fail(angle_loc, "camera angle must be between 0 and 180 degrees");
+        double half = *angle * M_PI / 360.0;
+        cam.direction = glm::normalize(cam.direction) * glm::length(cam.right) /
+                        (2.0 * std::tan(half));
+    }
+    // Step 3: look_at turns the camera, keeping the vectors' lengths and handedness.
+    if (have_look_at) {
+        double dl = glm::length(cam.direction), ul = glm::length(cam.up),
+               rl = glm::length(cam.right);
+        double handed = glm::dot(glm::cross(cam.up, cam.direction), cam.right);
+        glm::dvec3 d = look_at - cam.location;
+        if (glm::length(d) == 0.0) cur.fail(cam.loc, "camera look_at equals its location");
+        d = glm::normalize(d);
+        glm::dvec3 r = glm::cross(sky, d);
+        if (glm::length(r) < 1e-10) {
+            cur.warn(cam.loc, "camera sky is parallel to the view direction: right kept");
+            r = glm::normalize(cam.right);
+        } else {
+            r = glm::normalize(r);
+        }
+        glm::dvec3 u = glm::normalize(glm::cross(d, r));
+        cam.direction = d * dl;
+        cam.right = r * (handed > 0 ? rl : -rl);
+        cam.up = u * ul;
+    }
+    // Step 4: an orthographic camera sized by its look_at distance.
+    if (cam.type == scene::CameraType::Orthographic && ((!have_up && !have_right) || angle)) {
+        double k = glm::length(look_at - cam.location) / glm::length(cam.direction);
+        cam.right *= k;
+        cam.up *= k;
+    }
+    // Step 5: transforms last.
+    cam.location = transform.point(cam.location);
+    cam.direction = transform.vector(cam.direction);
+    cam.up = transform.vector(cam.up);
+    cam.right = transform.vector(cam.right);
+    return cam;
+}
+
+}  // namespace lumen::interp

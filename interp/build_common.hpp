@@ -1,0 +1,101 @@
+// Internal declarations shared by the scene builders (interp/build_*.cpp). Each builder reads
+// a block body through an ItemCursor, so map entries (`[0.5 pigment_body]`) and #declared
+// copies reuse the same code as the blocks themselves.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "interp/builders.hpp"
+#include "interp/item_cursor.hpp"
+
+namespace lumen::interp {
+
+// ---- transforms (build_transform.cpp) -------------------------------------------------------
+scene::Transform translation(const glm::dvec3& v);
+scene::Transform rotation(const glm::dvec3& degrees);  // x, then y, then z (left-handed)
+scene::Transform scaling(const glm::dvec3& s);
+scene::Transform inverted(const scene::Transform& t);
+// If `kw` (already consumed) is translate/rotate/scale/matrix/transform, reads its argument
+// and returns true with the transform in `out`. A Transform value item counts too.
+bool read_transform(ItemCursor& cur, const Item& kw, scene::Transform& out);
+const std::vector<std::string>& transform_keywords();
+scene::Transform build_transform_block(ItemCursor& cur);
+
+// Patterns move with everything written after them (povray-semantics.md §9.1).
+scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
+scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
+scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
+scene::LayeredTexture transformed(const scene::LayeredTexture& layers, const scene::Transform& t);
+
+// ---- patterns (build_pattern.cpp) -----------------------------------------------------------
+// If `kw` (already consumed) is a pattern type or pattern modifier, reads its arguments into
+// `pattern` and returns true. `owner` prefixes unsupported features ("normal" -> "normal
+// 'bumps'"; "" for pigments and textures -> "pattern 'bozo'").
+bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pattern,
+                          const std::string& owner);
+// How many list entries `checker A, B` style patterns take (0 = no list form).
+int pattern_list_size(scene::PatternType type);
+// True for the pattern words that may be followed by a list (`checker A, B`).
+bool is_list_pattern_word(const Item& item);
+bool is_pattern_word(const Item& item);  // checker, bozo, gradient, ...
+const std::vector<std::string>& pattern_keywords();
+void mark_unsupported(scene::Pattern& pattern, const std::string& feature, SourceLoc loc);
+
+// ---- maps (build_maps.cpp) ------------------------------------------------------------------
+scene::ColourMap build_colour_map(ItemCursor& cur);
+std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur);
+std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur);
+std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur);
+
+// ---- materials (build_pigment/texture/finish/normal/interior/material.cpp) -------------------
+scene::PigmentPtr build_pigment(ItemCursor& cur);
+scene::PigmentPtr solid_pigment(const scene::Colour& c, SourceLoc loc);
+scene::FinishPtr build_finish(ItemCursor& cur);
+scene::NormalPtr build_normal(ItemCursor& cur);
+scene::LayeredTexture build_texture(ItemCursor& cur);
+scene::Interior build_interior(ItemCursor& cur);
+MaterialValue build_material(ItemCursor& cur);
+// A fresh plain texture from the #default settings.
+std::shared_ptr<scene::Texture> default_texture(const BuildContext& ctx, SourceLoc loc);
+
+// ---- objects (build_object.cpp, build_csg.cpp, build_modifiers.cpp) -------------------------
+scene::ObjectPtr build_object(ItemCursor& cur);  // any shape keyword, CSG or `object`
+scene::ObjectPtr build_csg(ItemCursor& cur);
+scene::ObjectPtr build_mesh(ItemCursor& cur);   // build_mesh.cpp
+scene::ObjectPtr build_mesh2(ItemCursor& cur);
+scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
+bool is_unsupported_shape(const std::string& keyword);
+// Reads the object modifiers that follow a shape's own arguments. `extra` handles
+// shape-specific keywords (open, sturm, ...) and returns false for unknown ones.
+template <class Extra>
+void read_object_modifiers(ItemCursor& cur, scene::Object& obj, const Extra& extra,
+                           const std::vector<std::string>& extra_keywords);
+bool apply_object_modifier(ItemCursor& cur, const Item& item, scene::Object& obj);
+[[noreturn]] void fail_object_item(ItemCursor& cur, const Item& item,
+                                   const std::vector<std::string>& extra_keywords);
+void transform_object(scene::Object& obj, const scene::Transform& t);
+scene::ObjectPtr transformed(const scene::ObjectPtr& obj, const scene::Transform& t);
+
+template <class Extra>
+void read_object_modifiers(ItemCursor& cur, scene::Object& obj, const Extra& extra,
+                           const std::vector<std::string>& extra_keywords) {
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        if (extra(item)) continue;
+        if (apply_object_modifier(cur, item, obj)) continue;
+        fail_object_item(cur, item, extra_keywords);
+    }
+}
+
+// ---- scene-level blocks ---------------------------------------------------------------------
+scene::Camera build_camera(ItemCursor& cur);
+scene::Light build_light(ItemCursor& cur);
+scene::Fog build_fog(ItemCursor& cur);
+scene::SkySphere build_sky_sphere(ItemCursor& cur);
+scene::Colour build_background(ItemCursor& cur);
+void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& globals);
+
+// The BlockValue inside a value item (data blocks such as `reflection { }`), or null.
+const BlockValue* block_of(const Item& item, std::string_view keyword = {});
+
+}  // namespace lumen::interp

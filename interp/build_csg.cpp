@@ -1,0 +1,58 @@
+// union / merge / intersection / difference: children first, then object modifiers.
+// Children keep an empty texture when none was given: the renderer lets them inherit the
+// CSG's texture.
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+scene::CsgOp csg_op(const std::string& kw) {
+    if (kw == "merge") return scene::CsgOp::Merge;
+    if (kw == "intersection") return scene::CsgOp::Intersection;
+    if (kw == "difference") return scene::CsgOp::Difference;
+    return scene::CsgOp::Union;
+}
+
+}  // namespace
+
+scene::ObjectPtr build_csg(ItemCursor& cur) {
+    scene::Object obj;
+    obj.loc = cur.block_loc();
+    scene::Csg& csg = obj.shape.emplace<scene::Csg>();
+    csg.op = csg_op(cur.what());
+    bool modifiers_seen = false;
+    auto child = [&](const Item& item) {
+        if (item.kind != Item::Kind::Value) return false;
+        scene::ObjectPtr c;
+        if (item.value.is<scene::ObjectPtr>()) {
+            c = item.value.as<scene::ObjectPtr>();
+        } else if (item.value.is<scene::Unsupported>() &&
+                   is_unsupported_shape(item.value.as<scene::Unsupported>().feature)) {
+            c = unsupported_object(item.value.as<scene::Unsupported>());
+        } else if (item.value.is<std::shared_ptr<const scene::Light>>()) {
+            obj.unsupported.push_back({"light_source inside " + cur.what(), item.loc});
+            return true;
+        } else {
+            modifiers_seen = true;
+            return false;
+        }
+        // A child after a transform would not be moved by it the way POV moves children.
+        if (modifiers_seen)
+            cur.fail(item.loc, "objects must come before the modifiers in " + cur.what());
+        csg.children.push_back(std::move(c));
+        return true;
+    };
+    auto modifier = [&](const Item& item) {
+        if (child(item)) return true;
+        modifiers_seen = true;
+        return false;
+    };
+    read_object_modifiers(cur, obj, modifier, {});
+    if (csg.children.size() < 2 && csg.op != scene::CsgOp::Union)
+        cur.warn(cur.block_loc(), cur.what() + " should have at least 2 objects");
+    if (csg.children.empty()) cur.warn(cur.block_loc(), cur.what() + " has no objects");
+    return std::make_shared<scene::Object>(std::move(obj));
+}
+
+}  // namespace lumen::interp

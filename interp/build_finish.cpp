@@ -1,0 +1,120 @@
+// finish { } per povray-semantics.md §3.1 (defaults are scene::Finish's).
+#include <cmath>
+
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+const std::vector<std::string>& finish_keywords() {
+    static const std::vector<std::string> k = {
+        "ambient", "emission", "diffuse", "albedo", "brilliance", "phong", "phong_size",
+        "specular", "roughness", "metallic", "crand", "reflection", "reflection_exponent",
+        "conserve_energy", "irid", "ior", "refraction", "caustics", "fade_distance",
+        "fade_power"};
+    return k;
+}
+
+// reflection { Cmin [, Cmax] [fresnel [on]] [falloff F] [exponent E] [metallic [M]] }
+void read_reflection_block(BuildContext& ctx, const BlockValue& block, scene::Finish& f) {
+    ItemCursor cur(ctx, block);
+    std::vector<glm::dvec3> colours;
+    while (!cur.at_end()) {
+        if (cur.next_is_colour_like() || cur.next_is_keyword("color") ||
+            cur.next_is_keyword("colour") || cur.next_is_keyword("rgb")) {
+            if (colours.size() == 2) cur.fail(cur.peek().loc, "reflection takes at most 2 colours");
+            colours.push_back(cur.expect_colour("").rgb());
+            continue;
+        }
+        const Item& item = cur.next();
+        const std::string w = item.kind == Item::Kind::Keyword ? item.keyword : "";
+        if (w == "fresnel") f.fresnel = cur.optional_bool();
+        else if (w == "falloff") f.reflection_falloff = cur.expect_float(w);
+        else if (w == "exponent") f.reflection_exponent = cur.expect_float(w);
+        else if (w == "metallic") f.reflection_metallic = cur.optional_float().value_or(1.0);
+        else cur.fail_unexpected(item, {"fresnel", "falloff", "exponent", "metallic"});
+    }
+    if (colours.empty()) cur.fail(block.loc, "reflection needs a colour");
+    f.reflection_max = colours.back();
+    // One colour sets both ends, except under fresnel where the minimum becomes 0.
+    f.reflection_min = colours.size() == 2 ? colours[0]
+                       : f.fresnel         ? glm::dvec3(0)
+                                           : colours[0];
+}
+
+// irid { amount [thickness t] [turbulence t] }
+void read_irid_block(BuildContext& ctx, const BlockValue& block, scene::Finish& f) {
+    ItemCursor cur(ctx, block);
+    f.irid_amount = cur.expect_float("");
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        const std::string w = item.kind == Item::Kind::Keyword ? item.keyword : "";
+        if (w == "thickness") f.irid_thickness = cur.expect_float(w);
+        else if (w == "turbulence") f.irid_turbulence = cur.expect_float(w);
+        else cur.fail_unexpected(item, {"thickness", "turbulence"});
+    }
+}
+
+}  // namespace
+
+scene::FinishPtr build_finish(ItemCursor& cur) {
+    scene::Finish f;
+    if (cur.next_is<scene::FinishPtr>()) f = *cur.next().value.as<scene::FinishPtr>();
+    else if (cur.ctx().default_finish) f = *cur.ctx().default_finish;
+    f.loc = cur.block_loc();
+    // `albedo` adjustments use the final brilliance/phong_size/roughness: applied at the end.
+    bool diffuse_albedo = false, phong_albedo = false, specular_albedo = false;
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        if (const BlockValue* b = block_of(item, "reflection")) {
+            read_reflection_block(cur.ctx(), *b, f);
+            continue;
+        }
+        if (const BlockValue* b = block_of(item, "irid")) {
+            read_irid_block(cur.ctx(), *b, f);
+            continue;
+        }
+        if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, finish_keywords());
+        const std::string& w = item.keyword;
+        if (w == "ambient") f.ambient = cur.expect_colour(w).rgb();
+        else if (w == "emission") f.emission = cur.expect_colour(w).rgb();
+        else if (w == "diffuse") {
+            diffuse_albedo = cur.accept_keyword("albedo");
+            f.diffuse = cur.expect_float(w);
+            if (auto back = cur.optional_float()) f.diffuse_back = *back;
+        } else if (w == "brilliance") f.brilliance = cur.expect_float(w);
+        else if (w == "phong") {
+            phong_albedo = cur.accept_keyword("albedo");
+            f.phong = cur.expect_float(w);
+        } else if (w == "phong_size") f.phong_size = cur.expect_float(w);
+        else if (w == "specular") {
+            specular_albedo = cur.accept_keyword("albedo");
+            f.specular = cur.expect_float(w);
+        } else if (w == "roughness") {
+            f.roughness = cur.expect_float(w);
+            if (f.roughness <= 0) cur.fail(item.loc, "roughness must be greater than 0");
+        } else if (w == "metallic") f.metallic = cur.optional_float().value_or(1.0);
+        else if (w == "crand") f.crand = cur.expect_float(w);
+        else if (w == "reflection") {
+            glm::dvec3 c = cur.expect_colour(w).rgb();
+            f.reflection_min = f.reflection_max = c;
+        } else if (w == "reflection_exponent") f.reflection_exponent = cur.expect_float(w);
+        else if (w == "conserve_energy") f.conserve_energy = cur.optional_bool();
+        else if (w == "ior") f.ior = cur.expect_float(w);
+        else if (w == "refraction" || w == "caustics" || w == "fade_distance" ||
+                 w == "fade_power") {
+            cur.expect_float(w);
+            cur.warn(item.loc, "obsolete finish keyword '" + w + "' ignored (use interior)");
+        } else cur.fail_unexpected(item, finish_keywords());
+    }
+    if (diffuse_albedo) f.diffuse *= (f.brilliance + 1.0) / 2.0;
+    if (phong_albedo) f.phong *= (f.phong_size + 1.0) / 2.0;
+    if (specular_albedo) {
+        double e = 1.0 / f.roughness;
+        f.specular *= (e + 2.0) / (4.0 * (2.0 - std::pow(2.0, -e / 2.0)));
+    }
+    return std::make_shared<scene::Finish>(std::move(f));
+}
+
+}  // namespace lumen::interp

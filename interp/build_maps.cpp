@@ -1,0 +1,76 @@
+// color_map, pigment_map, texture_map and normal_map: lists of `[value body]` entries kept in
+// the order written (POV does not sort them).
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+// Calls `entry(value, cursor, item)` for each `[v ...]` entry. A #declared map of type M
+// written inside the block is spliced in by `copy`.
+template <class M, class Out, class Entry>
+void read_entries(ItemCursor& cur, Out& out, const Entry& entry) {
+    while (!cur.at_end()) {
+        const Item& it = cur.next();
+        if (it.kind == Item::Kind::Value && it.value.is<std::shared_ptr<const M>>()) {
+            const auto& m = it.value.as<std::shared_ptr<const M>>()->entries;
+            out.insert(out.end(), m.begin(), m.end());
+            continue;
+        }
+        if (it.kind != Item::Kind::MapEntry) cur.fail_unexpected(it, {});
+        ItemCursor e(cur.ctx(), it.entry, cur.what() + " entry", it.loc);
+        double v = e.expect_float("");
+        entry(v, e, it);
+        if (!e.at_end()) e.fail_unexpected(e.peek(), {});
+    }
+}
+
+size_t count_values(const std::vector<Item>& items) {
+    size_t n = 0;
+    for (const Item& i : items) n += i.kind == Item::Kind::Value;
+    return n;
+}
+
+}  // namespace
+
+scene::ColourMap build_colour_map(ItemCursor& cur) {
+    scene::ColourMap out;
+    read_entries<ColourMapValue>(cur, out, [&](double v, ItemCursor& e, const Item& it) {
+        // The old form `[a b colour1 colour2]` is a band from a to b.
+        if (e.next_is_float() && count_values(it.entry) == 4) {
+            double v2 = e.expect_float("");
+            scene::Colour c1 = e.expect_colour("");
+            out.push_back({v, c1});
+            out.push_back({v2, e.expect_colour("")});
+            return;
+        }
+        out.push_back({v, e.expect_colour("")});
+    });
+    return out;
+}
+
+std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur) {
+    std::vector<scene::Pigment::MapEntry> out;
+    read_entries<PigmentMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+        out.push_back({v, build_pigment(e)});
+    });
+    return out;
+}
+
+std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur) {
+    std::vector<scene::Texture::MapEntry> out;
+    read_entries<TextureMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+        out.push_back({v, build_texture(e)});
+    });
+    return out;
+}
+
+std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur) {
+    std::vector<std::pair<double, scene::NormalPtr>> out;
+    read_entries<NormalMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+        out.push_back({v, build_normal(e)});
+    });
+    return out;
+}
+
+}  // namespace lumen::interp

@@ -1,0 +1,114 @@
+// pigment { [Ident] colour | pattern [list] [color_map|pigment_map] modifiers }
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+bool next_is_colour_start(ItemCursor& cur) {
+    return cur.next_is_colour_like() || cur.next_is_keyword("color") ||
+           cur.next_is_keyword("colour") || cur.next_is_keyword("rgb") ||
+           cur.next_is_keyword("rgbf") || cur.next_is_keyword("rgbt") ||
+           cur.next_is_keyword("rgbft");
+}
+
+const std::vector<std::string>& pigment_keywords() {
+    static const std::vector<std::string> k = [] {
+        std::vector<std::string> v = pattern_keywords();
+        for (const char* w : {"color", "colour", "color_map", "colour_map", "pigment_map",
+                              "quick_color", "quick_colour", "rgb", "rgbf", "rgbt", "rgbft"})
+            v.push_back(w);
+        return v;
+    }();
+    return k;
+}
+
+// `checker Red, White` / `hexagon pigment{A} pigment{B} pigment{C}`: entry i has value i.
+void read_list_form(ItemCursor& cur, scene::Pigment& p) {
+    int n = pattern_list_size(p.pattern.type);
+    std::vector<scene::PigmentPtr> pigments;
+    bool all_colours = true;
+    for (int i = 0; i < n; ++i) {
+        if (cur.next_is<scene::PigmentPtr>()) {
+            pigments.push_back(cur.next().value.as<scene::PigmentPtr>());
+            all_colours = false;
+        } else if (next_is_colour_start(cur)) {
+            SourceLoc loc = cur.peek().loc;
+            pigments.push_back(solid_pigment(cur.expect_colour(""), loc));
+        } else {
+            break;
+        }
+    }
+    if (pigments.empty()) return;
+    p.list_form = true;
+    p.colour_map.clear();
+    p.pigment_map.clear();
+    for (size_t i = 0; i < pigments.size(); ++i) {
+        if (all_colours) p.colour_map.push_back({double(i), pigments[i]->colour});
+        else p.pigment_map.push_back({double(i), pigments[i]});
+    }
+}
+
+}  // namespace
+
+scene::PigmentPtr solid_pigment(const scene::Colour& c, SourceLoc loc) {
+    auto p = std::make_shared<scene::Pigment>();
+    p->colour = c;
+    p->loc = loc;
+    return p;
+}
+
+scene::PigmentPtr build_pigment(ItemCursor& cur) {
+    scene::Pigment p;
+    if (cur.next_is<scene::PigmentPtr>()) p = *cur.next().value.as<scene::PigmentPtr>();
+    else if (cur.ctx().default_pigment) p = *cur.ctx().default_pigment;
+    p.loc = cur.block_loc();
+    while (!cur.at_end()) {
+        if (next_is_colour_start(cur)) {
+            p.pattern.type = scene::PatternType::Plain;
+            p.colour = cur.expect_colour("");
+            continue;
+        }
+        const Item& item = cur.next();
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {  // moves pigment_map entries too
+            p = *transformed(std::make_shared<scene::Pigment>(p), t);
+            continue;
+        }
+        if (item.kind == Item::Kind::Value) {
+            if (item.value.is<std::shared_ptr<const ColourMapValue>>()) {
+                p.colour_map = item.value.as<std::shared_ptr<const ColourMapValue>>()->entries;
+                continue;
+            }
+            if (item.value.is<std::shared_ptr<const PigmentMapValue>>()) {
+                p.pigment_map = item.value.as<std::shared_ptr<const PigmentMapValue>>()->entries;
+                continue;
+            }
+        }
+        if (item.kind == Item::Kind::Keyword) {
+            const std::string& w = item.keyword;
+            if (w == "color_map" || w == "colour_map") {
+                p.colour_map =
+                    cur.expect<std::shared_ptr<const ColourMapValue>>(w, "a color_map")->entries;
+                continue;
+            }
+            if (w == "pigment_map") {
+                p.pigment_map =
+                    cur.expect<std::shared_ptr<const PigmentMapValue>>(w, "a pigment_map")->entries;
+                continue;
+            }
+            if (w == "quick_color" || w == "quick_colour") {  // preview colour: ignored
+                cur.expect_colour(w);
+                continue;
+            }
+        }
+        if (read_pattern_keyword(cur, item, p.pattern, "")) {
+            if (is_list_pattern_word(item)) read_list_form(cur, p);
+            continue;
+        }
+        cur.fail_unexpected(item, pigment_keywords());
+    }
+    return std::make_shared<scene::Pigment>(std::move(p));
+}
+
+}  // namespace lumen::interp

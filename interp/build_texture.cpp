@@ -1,0 +1,96 @@
+// texture { [Ident] pigment finish normal | pattern (texture_map | texture list) modifiers }
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+const std::vector<std::string>& texture_keywords() {
+    static const std::vector<std::string> k = [] {
+        std::vector<std::string> v = pattern_keywords();
+        for (const char* w : {"pigment", "finish", "normal", "texture_map", "quick_color",
+                              "quick_colour"})
+            v.push_back(w);
+        return v;
+    }();
+    return k;
+}
+
+// `checker texture{A} texture{B}`: entry i has value i.
+void read_list_form(ItemCursor& cur, scene::Texture& tex) {
+    int n = pattern_list_size(tex.pattern.type);
+    for (int i = 0; i < n && cur.next_is<std::shared_ptr<const TextureValue>>(); ++i) {
+        tex.texture_map.push_back(
+            {double(i), cur.next().value.as<std::shared_ptr<const TextureValue>>()->layers});
+        tex.list_form = true;
+    }
+}
+
+template <class T> bool take(ItemCursor& cur, const Item& item, const char* keyword,
+                             const char* desc, T& out) {
+    if (item.kind == Item::Kind::Value && item.value.is<T>()) {
+        out = item.value.as<T>();
+        return true;
+    }
+    if (item.kind == Item::Kind::Keyword && item.keyword == keyword) {
+        out = cur.expect<T>(keyword, desc);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::shared_ptr<scene::Texture> default_texture(const BuildContext& ctx, SourceLoc loc) {
+    auto t = std::make_shared<scene::Texture>();
+    t->pigment = ctx.default_pigment;
+    t->finish = ctx.default_finish;
+    t->normal = ctx.default_normal;
+    t->loc = loc;
+    return t;
+}
+
+scene::LayeredTexture build_texture(ItemCursor& cur) {
+    scene::LayeredTexture below;  // lower layers of a copied layered texture
+    scene::Texture top = *default_texture(cur.ctx(), cur.block_loc());
+    if (cur.next_is<std::shared_ptr<const TextureValue>>()) {
+        below = cur.next().value.as<std::shared_ptr<const TextureValue>>()->layers;
+        if (!below.empty()) {
+            top = *below.back();
+            below.pop_back();
+        }
+    }
+    top.loc = cur.block_loc();
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {
+            below = transformed(below, t);
+            top = *transformed(std::make_shared<scene::Texture>(top), t);
+            continue;
+        }
+        if (take(cur, item, "pigment", "a pigment", top.pigment) ||
+            take(cur, item, "finish", "a finish", top.finish) ||
+            take(cur, item, "normal", "a normal", top.normal))
+            continue;
+        std::shared_ptr<const TextureMapValue> map;
+        if (take(cur, item, "texture_map", "a texture_map", map)) {
+            top.texture_map = map->entries;
+            continue;
+        }
+        if (item.kind == Item::Kind::Keyword &&
+            (item.keyword == "quick_color" || item.keyword == "quick_colour")) {
+            cur.expect_colour(item.keyword);  // preview colour: ignored
+            continue;
+        }
+        if (read_pattern_keyword(cur, item, top.pattern, "")) {
+            if (is_list_pattern_word(item)) read_list_form(cur, top);
+            continue;
+        }
+        cur.fail_unexpected(item, texture_keywords());
+    }
+    below.push_back(std::make_shared<scene::Texture>(std::move(top)));
+    return below;
+}
+
+}  // namespace lumen::interp

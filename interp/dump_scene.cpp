@@ -1,0 +1,556 @@
+#include "interp/dump_scene.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace lumen::interp {
+
+namespace {
+
+// A tiny JSON tree: built in key order, then printed.
+struct Json {
+    enum class Kind { Number, String, Bool, Array, Object } kind = Kind::Object;
+    double number = 0;
+    std::string text;
+    bool flag = false;
+    std::vector<Json> items;                             // Array
+    std::vector<std::pair<std::string, Json>> members;  // Object
+
+    static Json num(double v) { Json j; j.kind = Kind::Number; j.number = v; return j; }
+    static Json str(std::string s) { Json j; j.kind = Kind::String; j.text = std::move(s); return j; }
+    static Json boolean(bool b) { Json j; j.kind = Kind::Bool; j.flag = b; return j; }
+    static Json array() { Json j; j.kind = Kind::Array; return j; }
+
+    bool empty() const { return kind == Kind::Object ? members.empty() : kind == Kind::Array && items.empty(); }
+    bool scalar() const { return kind != Kind::Array && kind != Kind::Object; }
+    Json& put(const std::string& key, Json v) { members.emplace_back(key, std::move(v)); return *this; }
+    Json& push(Json v) { items.push_back(std::move(v)); return *this; }
+};
+
+std::string format_number(double v) {
+    if (std::isnan(v)) return "\"nan\"";
+    if (std::isinf(v)) return v > 0 ? "\"inf\"" : "\"-inf\"";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    std::string s = buf;
+    return s == "-0" ? "0" : s;
+}
+
+std::string quote(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+            continue;
+        }
+        out += c;
+    }
+    return out + "\"";
+}
+
+void print(const Json& j, int indent, std::string& out) {
+    std::string pad(indent * 2, ' '), inner((indent + 1) * 2, ' ');
+    switch (j.kind) {
+        case Json::Kind::Number: out += format_number(j.number); return;
+        case Json::Kind::String: out += quote(j.text); return;
+        case Json::Kind::Bool: out += j.flag ? "true" : "false"; return;
+        case Json::Kind::Array: {
+            bool inline_form = true;
+            for (const Json& e : j.items) inline_form = inline_form && e.scalar();
+            out += "[";
+            for (size_t i = 0; i < j.items.size(); ++i) {
+                if (inline_form) out += i ? ", " : "";
+                else out += (i ? ",\n" : "\n") + inner;
+                print(j.items[i], indent + 1, out);
+            }
+            if (!inline_form && !j.items.empty()) out += "\n" + pad;
+            out += "]";
+            return;
+        }
+        case Json::Kind::Object: {
+            out += "{";
+            for (size_t i = 0; i < j.members.size(); ++i) {
+                out += (i ? ",\n" : "\n") + inner + quote(j.members[i].first) + ": ";
+                print(j.members[i].second, indent + 1, out);
+            }
+            if (!j.members.empty()) out += "\n" + pad;
+            out += "}";
+            return;
+        }
+    }
+}
+
+// ---- values ---------------------------------------------------------------------------------
+
+Json vec(const glm::dvec3& v) { return Json::array().push(Json::num(v.x)).push(Json::num(v.y)).push(Json::num(v.z)); }
+
+Json colour(const scene::Colour& c) {
+    Json a = Json::array();
+    for (double v : {c.r, c.g, c.b, c.f, c.t}) a.push(Json::num(v));
+    return a;
+}
+
+std::string loc_text(const SourceLoc& loc) {
+    if (!loc.file) return loc.str();
+    std::string name = loc.file->name;
+    size_t slash = name.find_last_of('/');
+    if (slash != std::string::npos) name = name.substr(slash + 1);
+    return name + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
+}
+
+Json unsupported_text(const scene::Unsupported& u) {
+    return Json::str(u.feature + " (" + loc_text(u.loc) + ")");
+}
+
+// Puts `key` only when the value differs from the default.
+void put_if(Json& o, const std::string& key, double v, double def) {
+    if (v != def) o.put(key, Json::num(v));
+}
+void put_if(Json& o, const std::string& key, bool v, bool def) {
+    if (v != def) o.put(key, Json::boolean(v));
+}
+void put_if(Json& o, const std::string& key, const glm::dvec3& v, const glm::dvec3& def) {
+    if (v != def) o.put(key, vec(v));
+}
+void put_if(Json& o, const std::string& key, const scene::Colour& v, const scene::Colour& def) {
+    if (!(v == def)) o.put(key, colour(v));
+}
+void put_nonempty(Json& o, const std::string& key, Json v) {
+    if (!v.empty()) o.put(key, std::move(v));
+}
+
+Json transform(const scene::Transform& t) {
+    Json rows = Json::array();
+    for (int r = 0; r < 3; ++r) {
+        Json row = Json::array();
+        for (int c = 0; c < 4; ++c) row.push(Json::num(t.m[c][r]));
+        rows.push(row);
+    }
+    return rows;
+}
+void put_transform(Json& o, const scene::Transform& t) {
+    if (!t.is_identity()) o.put("transform", transform(t));
+}
+
+const char* pattern_name(scene::PatternType t) {
+    static const char* names[] = {
+        "plain", "checker", "gradient", "planar", "radial", "onion", "spherical", "cylindrical",
+        "brick", "boxed", "hexagon", "square", "triangular", "agate", "bozo", "bumps", "crackle",
+        "dents", "granite", "leopard", "marble", "ripples", "spotted", "waves", "wood",
+        "wrinkles", "quilted", "other"};
+    return names[static_cast<int>(t)];
+}
+
+const char* wave_name(scene::WaveType w) {
+    static const char* names[] = {"ramp", "sine", "triangle", "scallop", "cubic", "poly"};
+    return names[static_cast<int>(w)];
+}
+
+Json pattern(const scene::Pattern& p) {
+    const scene::Pattern d;
+    Json o;
+    if (p.type != d.type) o.put("type", Json::str(pattern_name(p.type)));
+    put_if(o, "gradient", p.gradient, d.gradient);
+    put_if(o, "brick_size", p.brick_size, d.brick_size);
+    put_if(o, "mortar", p.mortar, d.mortar);
+    put_if(o, "frequency", p.frequency, d.frequency);
+    put_if(o, "phase", p.phase, d.phase);
+    if (p.wave != d.wave) o.put("wave", Json::str(wave_name(p.wave)));
+    put_if(o, "wave_exponent", p.wave_exponent, d.wave_exponent);
+    put_if(o, "turbulence", p.turbulence, d.turbulence);
+    put_if(o, "octaves", double(p.octaves), double(d.octaves));
+    put_if(o, "omega", p.omega, d.omega);
+    put_if(o, "lambda", p.lambda, d.lambda);
+    put_transform(o, p.transform);
+    if (p.unsupported) o.put("unsupported", unsupported_text(*p.unsupported));
+    return o;
+}
+
+Json colour_map(const scene::ColourMap& m) {
+    Json a = Json::array();
+    for (const auto& e : m) {
+        Json row = Json::array().push(Json::num(e.value));
+        for (double v : {e.colour.r, e.colour.g, e.colour.b, e.colour.f, e.colour.t})
+            row.push(Json::num(v));
+        a.push(row);
+    }
+    return a;
+}
+
+Json pigment(const scene::Pigment& p) {
+    const scene::Pigment d;
+    Json o;
+    put_nonempty(o, "pattern", pattern(p.pattern));
+    put_if(o, "colour", p.colour, d.colour);
+    put_nonempty(o, "colour_map", colour_map(p.colour_map));
+    Json pm = Json::array();
+    for (const auto& e : p.pigment_map) {
+        Json entry;
+        entry.put("value", Json::num(e.value));
+        if (e.pigment) entry.put("pigment", pigment(*e.pigment));
+        pm.push(entry);
+    }
+    put_nonempty(o, "pigment_map", pm);
+    put_if(o, "list_form", p.list_form, d.list_form);
+    return o;
+}
+
+Json finish(const scene::Finish& f) {
+    const scene::Finish d;
+    Json o;
+    put_if(o, "ambient", f.ambient, d.ambient);
+    put_if(o, "emission", f.emission, d.emission);
+    put_if(o, "diffuse", f.diffuse, d.diffuse);
+    put_if(o, "diffuse_back", f.diffuse_back, d.diffuse_back);
+    put_if(o, "brilliance", f.brilliance, d.brilliance);
+    put_if(o, "phong", f.phong, d.phong);
+    put_if(o, "phong_size", f.phong_size, d.phong_size);
+    put_if(o, "specular", f.specular, d.specular);
+    put_if(o, "roughness", f.roughness, d.roughness);
+    put_if(o, "metallic", f.metallic, d.metallic);
+    put_if(o, "crand", f.crand, d.crand);
+    put_if(o, "reflection_min", f.reflection_min, d.reflection_min);
+    put_if(o, "reflection_max", f.reflection_max, d.reflection_max);
+    put_if(o, "reflection_falloff", f.reflection_falloff, d.reflection_falloff);
+    put_if(o, "reflection_exponent", f.reflection_exponent, d.reflection_exponent);
+    put_if(o, "reflection_metallic", f.reflection_metallic, d.reflection_metallic);
+    put_if(o, "fresnel", f.fresnel, d.fresnel);
+    put_if(o, "conserve_energy", f.conserve_energy, d.conserve_energy);
+    put_if(o, "irid_amount", f.irid_amount, d.irid_amount);
+    put_if(o, "irid_thickness", f.irid_thickness, d.irid_thickness);
+    put_if(o, "irid_turbulence", f.irid_turbulence, d.irid_turbulence);
+    if (f.ior) o.put("ior", Json::num(*f.ior));
+    return o;
+}
+
+Json normal(const scene::Normal& n) {
+    Json o;
+    put_nonempty(o, "pattern", pattern(n.pattern));
+    put_if(o, "amount", n.amount, scene::Normal{}.amount);
+    return o;
+}
+
+Json layered(const scene::LayeredTexture& layers);
+
+Json texture(const scene::Texture& t) {
+    Json o;
+    if (t.pigment) o.put("pigment", pigment(*t.pigment));
+    if (t.finish) o.put("finish", finish(*t.finish));
+    if (t.normal) o.put("normal", normal(*t.normal));
+    put_nonempty(o, "pattern", pattern(t.pattern));
+    Json tm = Json::array();
+    for (const auto& e : t.texture_map) {
+        Json entry;
+        entry.put("value", Json::num(e.value));
+        entry.put("texture", layered(e.texture));
+        tm.push(entry);
+    }
+    put_nonempty(o, "texture_map", tm);
+    put_if(o, "list_form", t.list_form, false);
+    return o;
+}
+
+Json layered(const scene::LayeredTexture& layers) {
+    Json a = Json::array();
+    for (const auto& l : layers) a.push(l ? texture(*l) : Json());
+    return a;
+}
+
+Json interior(const scene::Interior& in) {
+    const scene::Interior d;
+    Json o;
+    put_if(o, "ior", in.ior, d.ior);
+    put_if(o, "caustics", in.caustics, d.caustics);
+    put_if(o, "dispersion", in.dispersion, d.dispersion);
+    put_if(o, "dispersion_samples", double(in.dispersion_samples), double(d.dispersion_samples));
+    put_if(o, "fade_distance", in.fade_distance, d.fade_distance);
+    put_if(o, "fade_power", in.fade_power, d.fade_power);
+    put_if(o, "fade_colour", in.fade_colour, d.fade_colour);
+    if (in.media) o.put("media", unsupported_text(*in.media));
+    return o;
+}
+
+Json object(const scene::Object& obj);
+
+struct ShapeDumper {
+    Json& o;
+    void operator()(const scene::Sphere& s) const {
+        o.put("type", Json::str("sphere"));
+        put_if(o, "center", s.center, scene::Sphere{}.center);
+        put_if(o, "radius", s.radius, scene::Sphere{}.radius);
+    }
+    void operator()(const scene::Plane& p) const {
+        o.put("type", Json::str("plane"));
+        put_if(o, "normal", p.normal, scene::Plane{}.normal);
+        put_if(o, "distance", p.distance, scene::Plane{}.distance);
+    }
+    void operator()(const scene::Box& b) const {
+        o.put("type", Json::str("box"));
+        put_if(o, "min", b.min, scene::Box{}.min);
+        put_if(o, "max", b.max, scene::Box{}.max);
+    }
+    void operator()(const scene::Cylinder& c) const {
+        const scene::Cylinder d;
+        o.put("type", Json::str("cylinder"));
+        put_if(o, "base", c.base, d.base);
+        put_if(o, "cap", c.cap, d.cap);
+        put_if(o, "radius", c.radius, d.radius);
+        put_if(o, "open", c.open, d.open);
+    }
+    void operator()(const scene::Cone& c) const {
+        const scene::Cone d;
+        o.put("type", Json::str("cone"));
+        put_if(o, "base", c.base, d.base);
+        put_if(o, "base_radius", c.base_radius, d.base_radius);
+        put_if(o, "cap", c.cap, d.cap);
+        put_if(o, "cap_radius", c.cap_radius, d.cap_radius);
+        put_if(o, "open", c.open, d.open);
+    }
+    void operator()(const scene::Torus& t) const {
+        const scene::Torus d;
+        o.put("type", Json::str("torus"));
+        put_if(o, "major", t.major, d.major);
+        put_if(o, "minor", t.minor, d.minor);
+        put_if(o, "sturm", t.sturm, d.sturm);
+    }
+    void operator()(const scene::Disc& c) const {
+        const scene::Disc d;
+        o.put("type", Json::str("disc"));
+        put_if(o, "center", c.center, d.center);
+        put_if(o, "normal", c.normal, d.normal);
+        put_if(o, "radius", c.radius, d.radius);
+        put_if(o, "hole", c.hole, d.hole);
+    }
+    void operator()(const scene::Triangle& t) const {
+        o.put("type", Json::str(t.smooth ? "smooth_triangle" : "triangle"));
+        Json pts = Json::array();
+        for (const auto& p : t.p) pts.push(vec(p));
+        o.put("points", pts);
+        if (t.smooth) {
+            Json ns = Json::array();
+            for (const auto& n : t.n) ns.push(vec(n));
+            o.put("normals", ns);
+        }
+    }
+    void operator()(const scene::Polygon& p) const {
+        o.put("type", Json::str("polygon"));
+        Json pts = Json::array();
+        for (const auto& v : p.points) pts.push(vec(v));
+        o.put("points", pts);
+    }
+    void operator()(const scene::Mesh& m) const {
+        o.put("type", Json::str("mesh"));
+        Json vs = Json::array(), ns = Json::array(), uvs = Json::array(), fs = Json::array(),
+             ts = Json::array();
+        for (const auto& v : m.vertices) vs.push(vec(v));
+        for (const auto& n : m.normals) ns.push(vec(n));
+        for (const auto& uv : m.uvs) uvs.push(Json::array().push(Json::num(uv.x)).push(Json::num(uv.y)));
+        for (const auto& f : m.faces) {
+            Json face = Json::array();
+            for (int i : f.v) face.push(Json::num(i));
+            if (f.n[0] >= 0 || f.tex[0] >= 0)
+                for (int i : f.n) face.push(Json::num(i));
+            if (f.tex[0] >= 0)
+                for (int i : f.tex) face.push(Json::num(i));
+            fs.push(face);
+        }
+        for (const auto& t : m.textures) ts.push(layered(t));
+        o.put("vertices", vs);
+        put_nonempty(o, "normals", ns);
+        put_nonempty(o, "uvs", uvs);
+        o.put("faces", fs);
+        put_nonempty(o, "textures", ts);
+        if (m.inside_vector) o.put("inside_vector", vec(*m.inside_vector));
+    }
+    void operator()(const scene::Csg& c) const {
+        static const char* ops[] = {"union", "merge", "intersection", "difference"};
+        o.put("type", Json::str(ops[static_cast<int>(c.op)]));
+    }
+    void operator()(const scene::UnsupportedShape& u) const {
+        o.put("type", Json::str("unsupported"));
+        o.put("what", unsupported_text(u.what));
+    }
+};
+
+Json objects(const std::vector<scene::ObjectPtr>& list) {
+    Json a = Json::array();
+    for (const auto& o : list) a.push(o ? object(*o) : Json());
+    return a;
+}
+
+Json object(const scene::Object& obj) {
+    const scene::Object d;
+    Json o;
+    o.put("loc", Json::str(loc_text(obj.loc)));
+    std::visit(ShapeDumper{o}, obj.shape);
+    put_transform(o, obj.transform);
+    put_nonempty(o, "texture", layered(obj.texture));
+    put_nonempty(o, "interior_texture", layered(obj.interior_texture));
+    if (obj.interior) o.put("interior", interior(*obj.interior));
+    put_nonempty(o, "clipped_by", objects(obj.clipped_by));
+    put_nonempty(o, "bounded_by", objects(obj.bounded_by));
+    put_if(o, "inverse", obj.inverse, d.inverse);
+    put_if(o, "hollow", obj.hollow, d.hollow);
+    put_if(o, "no_shadow", obj.no_shadow, d.no_shadow);
+    put_if(o, "no_image", obj.no_image, d.no_image);
+    put_if(o, "no_reflection", obj.no_reflection, d.no_reflection);
+    put_if(o, "double_illuminate", obj.double_illuminate, d.double_illuminate);
+    put_if(o, "no_radiosity", obj.no_radiosity, d.no_radiosity);
+    Json u = Json::array();
+    for (const auto& x : obj.unsupported) u.push(unsupported_text(x));
+    put_nonempty(o, "unsupported", u);
+    if (const auto* csg = std::get_if<scene::Csg>(&obj.shape))
+        o.put("children", objects(csg->children));
+    return o;
+}
+
+Json camera(const scene::Camera& c) {
+    const scene::Camera d;
+    Json o;
+    if (c.loc.file || c.loc.line) o.put("loc", Json::str(loc_text(c.loc)));
+    static const char* types[] = {"perspective", "orthographic", "other"};
+    if (c.type != d.type) o.put("type", Json::str(types[static_cast<int>(c.type)]));
+    put_if(o, "location", c.location, d.location);
+    put_if(o, "direction", c.direction, d.direction);
+    put_if(o, "up", c.up, d.up);
+    put_if(o, "right", c.right, d.right);
+    if (c.unsupported) o.put("unsupported", unsupported_text(*c.unsupported));
+    return o;
+}
+
+Json light(const scene::Light& l) {
+    const scene::Light d;
+    Json o;
+    o.put("loc", Json::str(loc_text(l.loc)));
+    static const char* types[] = {"point", "spotlight", "cylinder"};
+    if (l.type != d.type) o.put("type", Json::str(types[static_cast<int>(l.type)]));
+    put_if(o, "position", l.position, d.position);
+    put_if(o, "colour", l.colour, d.colour);
+    put_if(o, "parallel", l.parallel, d.parallel);
+    put_if(o, "point_at", l.point_at, d.point_at);
+    put_if(o, "radius", l.radius, d.radius);
+    put_if(o, "falloff", l.falloff, d.falloff);
+    put_if(o, "tightness", l.tightness, d.tightness);
+    put_if(o, "shadowless", l.shadowless, d.shadowless);
+    put_if(o, "fade_distance", l.fade_distance, d.fade_distance);
+    put_if(o, "fade_power", l.fade_power, d.fade_power);
+    if (l.area) {
+        const scene::AreaLight ad;
+        Json a;
+        a.put("axis1", vec(l.area->axis1));
+        a.put("axis2", vec(l.area->axis2));
+        a.put("size1", Json::num(l.area->size1));
+        a.put("size2", Json::num(l.area->size2));
+        put_if(a, "adaptive", double(l.area->adaptive), double(ad.adaptive));
+        put_if(a, "jitter", l.area->jitter, ad.jitter);
+        put_if(a, "circular", l.area->circular, ad.circular);
+        put_if(a, "orient", l.area->orient, ad.orient);
+        o.put("area_light", a);
+    }
+    put_if(o, "area_illumination", l.area_illumination, d.area_illumination);
+    put_if(o, "media_interaction", l.media_interaction, d.media_interaction);
+    put_if(o, "media_attenuation", l.media_attenuation, d.media_attenuation);
+    if (l.looks_like) o.put("looks_like", object(*l.looks_like));
+    if (l.projected_through) o.put("projected_through", object(*l.projected_through));
+    Json u = Json::array();
+    for (const auto& x : l.unsupported) u.push(unsupported_text(x));
+    put_nonempty(o, "unsupported", u);
+    return o;
+}
+
+Json radiosity(const scene::RadiositySettings& r) {
+    const scene::RadiositySettings d;
+    Json o;
+    put_if(o, "count", double(r.count), double(d.count));
+    put_if(o, "count_pool", double(r.count_pool), double(d.count_pool));
+    put_if(o, "error_bound", r.error_bound, d.error_bound);
+    put_if(o, "recursion_limit", double(r.recursion_limit), double(d.recursion_limit));
+    put_if(o, "nearest_count", double(r.nearest_count), double(d.nearest_count));
+    put_if(o, "pretrace_start", r.pretrace_start, d.pretrace_start);
+    put_if(o, "pretrace_end", r.pretrace_end, d.pretrace_end);
+    put_if(o, "low_error_factor", r.low_error_factor, d.low_error_factor);
+    put_if(o, "gray_threshold", r.gray_threshold, d.gray_threshold);
+    put_if(o, "minimum_reuse", r.minimum_reuse, d.minimum_reuse);
+    put_if(o, "maximum_reuse", r.maximum_reuse, d.maximum_reuse);
+    put_if(o, "brightness", r.brightness, d.brightness);
+    put_if(o, "adc_bailout", r.adc_bailout, d.adc_bailout);
+    put_if(o, "always_sample", r.always_sample, d.always_sample);
+    put_if(o, "normal", r.normal, d.normal);
+    put_if(o, "media", r.media, d.media);
+    put_if(o, "max_sample", r.max_sample, d.max_sample);
+    return o;
+}
+
+Json globals(const scene::GlobalSettings& g) {
+    const scene::GlobalSettings d;
+    Json o;
+    if (g.assumed_gamma) o.put("assumed_gamma", Json::num(*g.assumed_gamma));
+    put_if(o, "max_trace_level", double(g.max_trace_level), double(d.max_trace_level));
+    put_if(o, "adc_bailout", g.adc_bailout, d.adc_bailout);
+    put_if(o, "ambient_light", g.ambient_light, d.ambient_light);
+    put_if(o, "irid_wavelength", g.irid_wavelength, d.irid_wavelength);
+    put_if(o, "noise_generator", double(g.noise_generator), double(d.noise_generator));
+    put_if(o, "number_of_waves", double(g.number_of_waves), double(d.number_of_waves));
+    if (g.radiosity) o.put("radiosity", radiosity(*g.radiosity));
+    Json u = Json::array();
+    for (const auto& x : g.unsupported) u.push(unsupported_text(x));
+    put_nonempty(o, "unsupported", u);
+    return o;
+}
+
+Json fog(const scene::Fog& f) {
+    const scene::Fog d;
+    Json o;
+    put_if(o, "fog_type", double(f.type), double(d.type));
+    put_if(o, "distance", f.distance, d.distance);
+    put_if(o, "colour", f.colour, d.colour);
+    put_if(o, "turbulence", f.turbulence, d.turbulence);
+    put_if(o, "turb_depth", f.turb_depth, d.turb_depth);
+    put_if(o, "offset", f.offset, d.offset);
+    put_if(o, "alt", f.alt, d.alt);
+    put_if(o, "up", f.up, d.up);
+    put_transform(o, f.transform);
+    if (f.unsupported) o.put("unsupported", unsupported_text(*f.unsupported));
+    return o;
+}
+
+Json sky_sphere(const scene::SkySphere& s) {
+    Json o;
+    Json ps = Json::array();
+    for (const auto& p : s.pigments) ps.push(p ? pigment(*p) : Json());
+    put_nonempty(o, "pigments", ps);
+    put_transform(o, s.transform);
+    put_if(o, "emission", s.emission, scene::SkySphere{}.emission);
+    return o;
+}
+
+}  // namespace
+
+std::string dump_scene_json(const scene::Scene& s) {
+    const scene::Scene d;
+    Json root;
+    put_if(root, "language_version", s.language_version, d.language_version);
+    put_if(root, "version_given", s.version_given, d.version_given);
+    put_nonempty(root, "camera", camera(s.camera));
+    Json lights = Json::array();
+    for (const auto& l : s.lights) lights.push(light(l));
+    put_nonempty(root, "lights", lights);
+    put_nonempty(root, "objects", objects(s.objects));
+    put_nonempty(root, "globals", globals(s.globals));
+    put_if(root, "background", s.background, d.background);
+    if (s.sky_sphere) root.put("sky_sphere", sky_sphere(*s.sky_sphere));
+    Json fogs = Json::array();
+    for (const auto& f : s.fogs) fogs.push(fog(f));
+    put_nonempty(root, "fogs", fogs);
+    Json u = Json::array();
+    for (const auto& x : s.unsupported) u.push(unsupported_text(x));
+    put_nonempty(root, "unsupported", u);
+    std::string out;
+    print(root, 0, out);
+    return out + "\n";
+}
+
+}  // namespace lumen::interp
