@@ -89,7 +89,9 @@ struct Node {
     SourceLoc loc;                     // where the node starts
     std::string text;                  // meaning depends on kind (see above)
     double number = 0.0;               // Number
-    bool flag = false;                 // ArrayDecl: has initialiser
+    bool flag = false;                 // ArrayDecl: has initialiser; Block: written
+                                       // `function W, H { }` (height_field), W and H are
+                                       // children[0] and [1], the body follows
     std::vector<NodePtr> children;
     std::vector<std::string> ops;      // Binary operators
     std::vector<std::string> params;   // Block function params, Macro params

@@ -186,11 +186,22 @@ NodePtr params(NodePtr n, std::string_view, BuildState&) {
     return n;
 }
 
+NodePtr resolution(NodePtr n, std::string_view, BuildState&) {
+    n->text = "function_resolution";
+    return n;
+}
+
 NodePtr block(NodePtr n, std::string_view, BuildState&) {
     n->text = std::move(pop_front(*n)->text);
-    if (!n->children.empty() && n->children.front()->kind == Kind::Null &&
-        n->children.front()->text == "(")
-        n->params = std::move(pop_front(*n)->params);
+    if (n->children.empty() || n->children.front()->kind != Kind::Null) return n;
+    NodePtr head = pop_front(*n);
+    if (head->text == "(") {
+        n->params = std::move(head->params);
+    } else {  // `function W, H { ... }`: W and H lead the children
+        n->flag = true;
+        n->children.insert(n->children.begin(), std::make_move_iterator(head->children.begin()),
+                           std::make_move_iterator(head->children.end()));
+    }
     return n;
 }
 

@@ -72,6 +72,7 @@ ast::NodePtr named(ast::NodePtr n, std::string_view, BuildState&);  // text := f
 ast::NodePtr bare_colour(ast::NodePtr n, std::string_view, BuildState&);
 ast::NodePtr array_decl(ast::NodePtr n, std::string_view, BuildState&);
 ast::NodePtr params(ast::NodePtr n, std::string_view, BuildState&);
+ast::NodePtr resolution(ast::NodePtr n, std::string_view, BuildState&);
 ast::NodePtr block(ast::NodePtr n, std::string_view, BuildState&);
 ast::NodePtr branch(ast::NodePtr n, std::string_view, BuildState&);
 ast::NodePtr directive_word(ast::NodePtr n, std::string_view t, BuildState&);
@@ -154,6 +155,7 @@ LUMEN_NODE(body, makes<K::Body, finish::keep, true>);
 LUMEN_NODE(block_word, token<>);
 LUMEN_NODE(param_name, token<>);
 LUMEN_NODE(block_params, token<finish::params>);
+LUMEN_NODE(function_resolution, token<finish::resolution>);
 LUMEN_NODE(block, makes<K::Block, finish::block, true>);
 LUMEN_NODE(map_entry, makes<K::MapEntry, finish::keep, true>);
 LUMEN_NODE(keyword_item, makes<K::Keyword, finish::text>);

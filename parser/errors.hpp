@@ -18,6 +18,7 @@ inline constexpr const char* error_message = nullptr;
     inline constexpr const char* error_message<rules::rule> = text
 
 LUMEN_ERROR(expression, "expected expression");
+LUMEN_ERROR(plain_expression, "expected expression");
 LUMEN_ERROR(vector_component, "expected vector component");
 LUMEN_ERROR(close_paren, "expected ')'");
 LUMEN_ERROR(open_paren, "expected '('");

@@ -132,10 +132,14 @@ struct string_literal : delimited<'"', 0, skip_string, unterminated_string> {};
 
 template <bool Cmp> struct ternary_t;
 struct expression;
+struct plain_expression;
 struct vector_component;
 
 struct comma : one<','> {};
 struct list_sep : seq<sep, comma, sep> {};
+// Separator of list elements: a comma, or just whitespace (POV lets commas be omitted in
+// vectors, argument lists and array initialisers).
+struct element_sep : sor<list_sep, sep> {};
 
 struct close_paren : one<')'> {};
 struct close_angle : one<'>'> {};
@@ -147,19 +151,19 @@ struct colon : one<':'> {};
 // paren := '(' expression ')'
 struct paren : seq<one<'('>, sep, must<expression>, sep, must<close_paren>> {};
 
-// vector := '<' vector_component {[','] vector_component} '>'   (POV accepts `< -1 0 0 >`)
-struct vector : seq<one<'<'>, sep, must<vector_component>,
-                    star<sor<list_sep, sep>, vector_component>, sep, must<close_angle>> {};
+// vector := '<' vector_component {[','] vector_component} [','] '>'   (`< -1 0 0 >` is valid)
+struct vector : seq<one<'<'>, sep, must<vector_component>, star<element_sep, vector_component>,
+                    opt<list_sep>, sep, must<close_angle>> {};
 
 struct block;
 struct array_decl;
 struct array_init;
 
 // call_arg := block | array_decl | expression
-struct call_arg : sor<block, array_decl, expression> {};
+struct call_arg : sor<block, array_decl, plain_expression> {};
 struct call_name : word_if<user_or_expression_word> {};
-// call := name '(' [call_arg {',' call_arg}] ')'
-struct call : seq<call_name, sep, one<'('>, sep, opt<call_arg, star<list_sep, must<call_arg>>>,
+// call := name '(' [call_arg {[','] call_arg}] ')'
+struct call : seq<call_name, sep, one<'('>, sep, opt<call_arg, star<element_sep, call_arg>>,
                   sep, must<close_paren>> {};
 
 // ident := a non-reserved word or a constant (x, pi, clock, true, ...)
@@ -169,9 +173,9 @@ struct ident : word_if<user_or_expression_word> {};
 struct rgb_word : word_if<is_rgb_word> {};
 struct component_word : word_if<is_component_word> {};
 struct colour_keyword : word_if<is_colour_keyword> {};
-struct rgb_part : seq<rgb_word, sep, must<expression>> {};
-struct component_part : seq<component_word, sep, must<expression>> {};
-struct bare_part : seq<expression> {};
+struct rgb_part : seq<rgb_word, sep, must<plain_expression>> {};
+struct component_part : seq<component_word, sep, must<plain_expression>> {};
+struct bare_part : seq<plain_expression> {};
 struct colour_first_part : sor<rgb_part, component_part, bare_part> {};
 // colour := ('color'|'colour') colour_first_part {component_part} | rgb_part {component_part}
 struct colour_expr
@@ -183,13 +187,16 @@ struct array_keyword : TAO_PEGTL_KEYWORD("array") {};
 struct array_dim : seq<one<'['>, sep, opt<expression>, sep, must<close_bracket>> {};
 struct array_decl : seq<array_keyword, sep, opt<TAO_PEGTL_KEYWORD("mixed"), sep>,
                         star<array_dim, sep>, opt<array_init>> {};
-// array_init := '{' [element {',' element} [',']] '}' ; element := array_init | block | expression
-struct array_element : sor<array_init, block, expression> {};
-struct array_init : seq<one<'{'>, sep, opt<array_element, star<list_sep, array_element>>,
+// array_init := '{' [element {[','] element} [',']] '}' ; element := array_init | block | expr
+struct array_element : sor<array_init, block, plain_expression> {};
+struct array_init : seq<one<'{'>, sep, opt<array_element, star<element_sep, array_element>>,
                         opt<list_sep>, sep, must<close_brace>> {};
 
-// primary := number | string | vector | paren | array_decl | colour | call | ident
-struct primary : sor<number, string_literal, vector, paren, array_decl, colour_expr, call, ident> {};
+// primary := number | string | vector | paren | array_decl | colour | call | ident | #if
+//   (an #if inside an expression chooses the value: `(#if (M) A #else B #end)`, math.inc)
+struct if_directive;
+struct primary : sor<number, string_literal, vector, paren, array_decl, colour_expr, call, ident,
+                     if_directive> {};
 
 // postfix := primary {'.' word | '[' expression ']'}
 struct member_suffix : seq<one<'.'>, word> {};
@@ -229,10 +236,13 @@ struct ternary_tail : seq<sep, one<'?'>, sep, must<ternary_t<Cmp>>, sep, must<co
 template <bool Cmp>
 struct ternary_t : seq<disjunction<Cmp>, opt<ternary_tail<Cmp>>> {};
 
-// expression := ternary (full expression, comparisons included)
+// expression := ternary with comparisons: only inside '(' ')' and '[' ']', as in POV-Ray
 struct expression : ternary_t<true> {};
-// vector_component := ternary without top-level comparisons, so '>' closes the vector
-struct vector_component : ternary_t<false> {};
+// plain_expression := ternary without top-level comparisons: everywhere else, so that
+// `box { <0,0,0> <1,1,1> }`, `[0 <0,1>]` and `Foo(off <1,2>)` read '<' as a new vector
+struct plain_expression : ternary_t<false> {};
+// vector_component := plain_expression ('>' closes the vector)
+struct vector_component : plain_expression {};
 
 // ---- items ----------------------------------------------------------------------------------
 
@@ -243,12 +253,17 @@ struct directive;
 struct body : star<item> {};
 
 // block := word ['(' word {',' word} ')'] '{' item* '}'
+//          | 'function' expr [','] expr '{' item* '}'     (height_field resolution)
 struct block_word : word {};
 struct param_name : word {};
 struct block_params : seq<one<'('>, sep, opt<param_name, star<list_sep, param_name>>, sep,
                           one<')'>> {};
-struct block : seq<block_word, sep, opt<block_params, sep>, open_brace, sep, star<item>,
-                   must<close_brace>> {};
+struct function_resolution : seq<plain_expression, element_sep, plain_expression, sep> {};
+struct block_head
+    : sor<seq<at<TAO_PEGTL_KEYWORD("function")>, block_word, sep, not_at<one<'(', '{'>>,
+              function_resolution>,
+          seq<block_word, sep, opt<block_params, sep>>> {};
+struct block : seq<block_head, open_brace, sep, star<item>, must<close_brace>> {};
 
 // map_entry := '[' item* ']'
 struct map_entry : seq<one<'['>, sep, star<item>, must<close_bracket>> {};
@@ -260,7 +275,7 @@ struct semicolon_item : one<';'> {};
 
 // item := directive | block | map_entry | ',' | ';' | keyword | expression
 struct item : sor<directive, padded<block>, padded<map_entry>, padded<comma_item>,
-                  padded<semicolon_item>, padded<keyword_item>, padded<expression>> {};
+                  padded<semicolon_item>, padded<keyword_item>, padded<plain_expression>> {};
 
 // ---- directives -----------------------------------------------------------------------------
 
@@ -305,24 +320,27 @@ struct optional_semicolon : opt<one<';'>, sep> {};
 
 // version := '#version' ('unofficial' text-up-to-';' | expression) [';']
 struct unofficial_version : seq<TAO_PEGTL_KEYWORD("unofficial"), until<at<one<';'>>>> {};
-struct version_value : sor<unofficial_version, expression> {};
+struct version_value : sor<unofficial_version, plain_expression> {};
 struct version_directive : seq<kw_version, sep, must<version_value>, sep, optional_semicolon> {};
 
 // include := '#include' expression
-struct include_directive : seq<kw_include, sep, must<expression>, sep> {};
+struct include_directive : seq<kw_include, sep, must<plain_expression>, sep> {};
 
 // declare := ('#declare' | '#local') target '=' rhs [';']
 //   target := word {'[' expression ']'}   (not a reserved word)
-//   rhs := texture-block {texture-block} | block | array_decl | directive | expression
+//   rhs := texture-block {texture-block} | block | array_decl | #if/#ifdef/#switch/#include
+//        | expression
 struct declare_name : word_if<unreserved_word> {};
 struct reserved_declare_name : word_if<reserved_word> {};
 struct declare_target : seq<declare_name, star<index_suffix>> {};
 struct equals_sign : one<'='> {};
 struct texture_block : seq<at<TAO_PEGTL_KEYWORD("texture"), sep, one<'{'>>, block> {};
-struct if_directive;
 struct switch_directive;
+struct ifdef_directive;
+struct include_directive;
 struct declare_rhs : sor<seq<texture_block, star<sep, texture_block>>, block, array_decl,
-                         if_directive, switch_directive, expression> {};
+                         if_directive, ifdef_directive, switch_directive, include_directive,
+                         plain_expression> {};
 // deprecated := 'deprecated' ['once'] string   (a warning to print when the name is used)
 struct deprecation : seq<TAO_PEGTL_KEYWORD("deprecated"), sep,
                          opt<TAO_PEGTL_KEYWORD("once"), sep>, must<string_literal>> {};
@@ -338,8 +356,8 @@ struct undef_name : word {};
 struct undef_directive : seq<kw_undef, sep, must<undef_name>, sep> {};
 
 // if := '#if' expression body {'#elseif' expression body} ['#else' body] '#end'
-struct then_branch : seq<must<expression>, sep, body> {};
-struct elseif_branch : seq<kw_elseif, sep, must<expression>, sep, body> {};
+struct then_branch : seq<must<plain_expression>, sep, body> {};
+struct elseif_branch : seq<kw_elseif, sep, must<plain_expression>, sep, body> {};
 struct else_branch : seq<kw_else, sep, body> {};
 struct if_directive
     : seq<kw_if, sep, then_branch, star<elseif_branch>, opt<else_branch>, must<end_directive>> {};
@@ -355,11 +373,11 @@ struct ifdef_directive : seq<sor<kw_ifdef, kw_ifndef>, sep, must<open_paren>, se
 
 // switch := '#switch' expression {case | range | else} '#end'
 //   case := '#case' expression body ; range := '#range' '(' expr ',' expr ')' body
-struct case_clause : seq<kw_case, sep, must<expression>, sep, body> {};
-struct range_bounds : seq<must<open_paren>, sep, must<expression>, sep, must<comma>, sep,
-                          must<expression>, sep, must<close_paren>> {};
+struct case_clause : seq<kw_case, sep, must<plain_expression>, sep, body> {};
+struct range_bounds : seq<must<open_paren>, sep, must<plain_expression>, sep, must<comma>, sep,
+                          must<plain_expression>, sep, must<close_paren>> {};
 struct range_clause : seq<kw_range, sep, range_bounds, sep, body> {};
-struct switch_directive : seq<kw_switch, sep, must<expression>, sep,
+struct switch_directive : seq<kw_switch, sep, must<plain_expression>, sep,
                               star<sor<case_clause, range_clause, else_branch>>,
                               must<end_directive>> {};
 
@@ -367,14 +385,14 @@ struct switch_directive : seq<kw_switch, sep, must<expression>, sep,
 struct break_directive : seq<kw_break, sep> {};
 
 // while := '#while' expression body '#end'
-struct while_directive : seq<kw_while, sep, must<expression>, sep, body, must<end_directive>> {};
+struct while_directive : seq<kw_while, sep, must<plain_expression>, sep, body, must<end_directive>> {};
 
 // for := '#for' '(' word ',' expr ',' expr [',' expr] ')' body '#end'
 struct for_variable : word {};
-struct for_step : opt<list_sep, must<expression>> {};
+struct for_step : opt<list_sep, must<plain_expression>> {};
 struct for_directive
     : seq<kw_for, sep, must<open_paren>, sep, must<for_variable>, sep, must<comma>, sep,
-          must<expression>, sep, must<comma>, sep, must<expression>, for_step, sep,
+          must<plain_expression>, sep, must<comma>, sep, must<plain_expression>, for_step, sep,
           must<close_paren>, sep, body, must<end_directive>> {};
 
 // macro := '#macro' word '(' [param {',' param}] ')' raw-text '#end'
@@ -450,29 +468,33 @@ struct default_directive : seq<kw_default, sep, must<open_brace>, sep, star<item
 
 // message := ('#debug' | '#warning' | '#error' | '#render' | '#statistics') expression
 struct message_word : sor<kw_debug, kw_warning, kw_error, kw_render, kw_statistics> {};
-struct message_directive : seq<message_word, sep, must<expression>, sep> {};
+struct message_directive : seq<message_word, sep, must<plain_expression>, sep> {};
 
 // file_io := '#fopen' word expression word | '#fclose' word
 //          | ('#read' | '#write') '(' expression {',' expression} ')'
 struct file_handle : word {};
 struct open_mode : word {};
-struct fileio_args : seq<must<open_paren>, sep, list<expression, list_sep>, sep,
+// Arguments are read loosely: values, commas (even trailing) and type words (`uint16be`).
+struct fileio_args : seq<must<open_paren>, sep,
+                         star<sor<padded<comma>, padded<keyword_item>, padded<plain_expression>>>,
                          must<close_paren>> {};
 struct fileio_directive
-    : sor<seq<kw_fopen, sep, must<file_handle>, sep, must<expression>, sep, must<open_mode>>,
+    : sor<seq<kw_fopen, sep, must<file_handle>, sep, must<plain_expression>, sep, must<open_mode>>,
           seq<kw_fclose, sep, must<file_handle>>, seq<sor<kw_read, kw_write>, sep, fileio_args>> {};
 struct fileio : seq<fileio_directive, sep> {};
 
 // Words that end a directive body rather than start an item.
 struct body_terminator : sor<kw_end, kw_else, kw_elseif, kw_case, kw_range> {};
 struct unknown_directive : seq<one<'#'>, star<blank>, opt<word>> {};
+// A '#' not followed by a word is ignored, as POV-Ray does (`look_at <0,2,0>#`).
+struct lone_hash : seq<one<'#'>, not_at<star<blank>, identifier_first>, sep> {};
 
 // directive := one of the above; an unknown '#word' is an error
 struct directive
     : sor<declare_directive, if_directive, while_directive, for_directive, macro_directive,
           ifdef_directive, switch_directive, break_directive, include_directive,
           version_directive, undef_directive, default_directive, message_directive, fileio,
-          seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
+          lone_hash, seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
 
 // ---- entry points ---------------------------------------------------------------------------
 
