@@ -1,0 +1,21 @@
+// Comparing two renders over 8-bit RGB: PSNR, largest error and a difference heat map.
+#pragma once
+#include <string>
+
+namespace lumen::differential {
+
+struct Comparison {
+    int width = 0, height = 0;
+    double psnr = 0;  // dB; infinity when the images are identical
+    int max_error = 0;  // largest |a-b| over all channels, in 8-bit levels
+    double differing_fraction = 0;  // share of pixels with any channel differing
+};
+
+// Loads both images (any format OpenImageIO reads), quantised to 8 bits, and compares their
+// RGB channels. Writes a heat map of the per-pixel largest difference to `heat_map_path`
+// (black = equal, through red and yellow to white = 64 levels or more). Throws
+// std::runtime_error if an image cannot be read or the sizes differ.
+Comparison compare_images(const std::string& reference, const std::string& candidate,
+                          const std::string& heat_map_path);
+
+}  // namespace lumen::differential
