@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+
+#include "parser/diagnostics.hpp"
+#include "render/image_output.hpp"
+
+namespace lumen::render {
+namespace {
+
+scene::Scene legacy() { return {}; }
+scene::Scene v37() {
+    scene::Scene s;
+    s.language_version = 3.7;
+    s.version_given = true;
+    return s;
+}
+
+TEST(ImageOutput, GammaModels) {
+    const OutputOptions o;
+    EXPECT_EQ(encode_8bit(0.7, legacy(), o), 178);  // no #version: bytes are the values
+    EXPECT_EQ(encode_8bit(0.7, v37(), o), 218);     // 3.7: sRGB encode of linear values
+    scene::Scene g22 = v37();
+    g22.globals.assumed_gamma = 2.2;
+    EXPECT_EQ(encode_8bit(0.7, g22, o), 180);       // power law decode, then sRGB
+    scene::Scene legacy_g1 = legacy();
+    legacy_g1.globals.assumed_gamma = 1.0;          // a legacy scene with assumed_gamma
+    EXPECT_EQ(encode_8bit(0.7, legacy_g1, o), 218);
+    EXPECT_EQ(encode_8bit(0.21404114, v37(), o), 128);  // srgb 0.5 round trip
+}
+
+TEST(ImageOutput, ClipsAndRoundsHalfUp) {
+    const OutputOptions o;
+    EXPECT_EQ(encode_8bit(-1, legacy(), o), 0);
+    EXPECT_EQ(encode_8bit(4.0, legacy(), o), 255);
+    EXPECT_EQ(encode_8bit(0.5 / 255, legacy(), o), 1);  // floor(v·255 + 0.5)
+    OutputOptions linear;
+    linear.file_gamma = 1.0;
+    EXPECT_EQ(encode_8bit(0.5, v37(), linear), 128);
+}
+
+Image gradient_image() {
+    Image img;
+    img.width = 4;
+    img.height = 2;
+    img.pixels.assign(4 * 2 * 5, 0.f);
+    for (int x = 0; x < 4; ++x) {
+        img.at(x, 0)[0] = float(x) / 3;
+        img.at(x, 1)[1] = 2.0f;  // over-range: clipped only when written
+    }
+    return img;
+}
+
+TEST(ImageOutput, WritesPngAndPpmWithIdenticalPixels) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_test";
+    std::filesystem::create_directories(dir);
+    const Image img = gradient_image();
+    for (FileType type : {FileType::PNG, FileType::PPM}) {
+        OutputOptions o;
+        o.type = type;
+        const std::string path = (dir / (type == FileType::PNG ? "t.png" : "t.ppm")).string();
+        write_image(img, legacy(), o, path);
+        auto in = OIIO::ImageInput::open(path);
+        ASSERT_TRUE(in) << path;
+        std::vector<unsigned char> px(4 * 2 * 3);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+        EXPECT_EQ(px[0], 0);
+        EXPECT_EQ(px[3], 85);
+        EXPECT_EQ(px[9], 255);
+        EXPECT_EQ(px[12 + 1], 255);  // clipped
+        EXPECT_EQ(px[12 + 0], 0);
+    }
+    // No temporary files are left behind.
+    int files = 0;
+    for (auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
+    EXPECT_EQ(files, 2);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ImageOutput, SixteenBitPngAndExr) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_test16";
+    std::filesystem::create_directories(dir);
+    const Image img = gradient_image();
+    OutputOptions o;
+    o.bits = 16;
+    const std::string png = (dir / "t16.png").string();
+    write_image(img, legacy(), o, png);
+    auto in = OIIO::ImageInput::open(png);
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT16);
+    std::vector<uint16_t> px(4 * 2 * 3);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT16, px.data()));
+    EXPECT_EQ(px[3], 21845);  // floor(1/3 · 65535 + 0.5)
+    in->close();
+
+    o.type = FileType::EXR;
+    const std::string exr = (dir / "t.exr").string();
+    write_image(img, v37(), o, exr);
+    auto ein = OIIO::ImageInput::open(exr);
+    ASSERT_TRUE(ein);
+    std::vector<float> f(4 * 2 * 3);
+    ASSERT_TRUE(ein->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, f.data()));
+    EXPECT_NEAR(f[12 + 1], 2.0f, 1e-3);  // HDR keeps over-range values
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ImageOutput, UnwritableFolderIsAnError) {
+    OutputOptions o;
+    EXPECT_THROW(write_image(gradient_image(), legacy(), o, "/nonexistent-folder/x.png"),
+                 lumen::LumenError);
+}
+
+}  // namespace
+}  // namespace lumen::render

@@ -1,0 +1,117 @@
+// Unit checks of the finish model and light attenuation formulas (§3, §6).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "render/lights.hpp"
+#include "render/shading.hpp"
+#include "render/shadows.hpp"
+
+namespace lumen::render {
+namespace {
+
+TEST(Shading, MetallicFactorIsNeutralForWhiteAndTintsOtherwise) {
+    const glm::dvec3 white = metallic_factor(1.0, 1.0, glm::dvec3(1));
+    EXPECT_DOUBLE_EQ(white.x, 1.0);
+    const glm::dvec3 red = metallic_factor(1.0, 1.0, {1, 0, 0});
+    EXPECT_DOUBLE_EQ(red.x, 1.0);
+    EXPECT_LT(red.y, 0.5);  // head-on: Fm small, highlight takes the pigment colour
+    EXPECT_GT(metallic_factor(1.0, 0.01, {1, 0, 0}).y, red.y);  // grazing: whiter
+}
+
+TEST(Shading, ReflectionFalloffBlendsMinAndMax) {
+    scene::Finish f;
+    f.reflection_min = glm::dvec3(0.1);
+    f.reflection_max = glm::dvec3(0.9);
+    f.reflection_falloff = 2;
+    EXPECT_DOUBLE_EQ(reflectivity(f, 1.0, 1.0, glm::dvec3(1)).colour.x, 0.1);  // head-on
+    EXPECT_NEAR(reflectivity(f, 0.5, 1.0, glm::dvec3(1)).colour.x, 0.25 * 0.9 + 0.75 * 0.1, 1e-12);
+    EXPECT_DOUBLE_EQ(reflectivity(f, 0.5, 1.0, glm::dvec3(1)).weight, 0.9);
+}
+
+TEST(Shading, FresnelReflectanceOfGlass) {
+    scene::Finish f;
+    f.reflection_max = glm::dvec3(1);
+    f.fresnel = true;
+    // Normal incidence on n = 1.5: ((n−1)/(n+1))² = 0.04.
+    EXPECT_NEAR(reflectivity(f, 1.0, 1.5, glm::dvec3(1)).colour.x, 0.04, 1e-9);
+    // Leaving glass beyond the critical angle: total reflection.
+    EXPECT_DOUBLE_EQ(reflectivity(f, 0.3, 1 / 1.5, glm::dvec3(1)).colour.x, 1.0);
+}
+
+TEST(Shading, ReflectedRayStaysAboveTheSurface) {
+    const glm::dvec3 d = glm::normalize(glm::dvec3(1, -1, 0));
+    const glm::dvec3 r = reflect_direction(d, {0, 1, 0}, {0, 1, 0});
+    EXPECT_NEAR(r.y, std::sqrt(0.5), 1e-12);
+}
+
+TEST(Lights, FadeIsTwoAtTheLightAndOneAtFadeDistance) {
+    scene::Light l;
+    l.position = {0, 0, 0};
+    l.fade_distance = 3;
+    l.fade_power = 2;
+    const auto prepared = prepare_lights({l});
+    LightSample s;
+    ASSERT_TRUE(illuminate(prepared[0], {3, 0, 0}, s));
+    EXPECT_NEAR(s.colour.x, 1.0, 1e-12);
+    EXPECT_NEAR(s.dir.x, -1, 1e-12);
+    EXPECT_NEAR(s.distance, 3, 1e-12);
+    ASSERT_TRUE(illuminate(prepared[0], {1e-6, 0, 0}, s));
+    EXPECT_NEAR(s.colour.x, 2.0, 1e-6);
+}
+
+TEST(Lights, SpotlightConeAndParallelDirection) {
+    scene::Light spot;
+    spot.type = scene::LightType::Spot;
+    spot.position = {0, 10, 0};
+    spot.point_at = {0, 0, 0};
+    spot.radius = 10;
+    spot.falloff = 20;
+    const auto lights = prepare_lights({spot});
+    LightSample s;
+    ASSERT_TRUE(illuminate(lights[0], {0, 0, 0}, s));
+    EXPECT_DOUBLE_EQ(s.colour.x, 1.0);
+    EXPECT_FALSE(illuminate(lights[0], {10, 0, 0}, s));  // 45° is outside the falloff
+    ASSERT_TRUE(illuminate(lights[0], {10 * std::tan(15 * M_PI / 180), 0, 0}, s));
+    EXPECT_GT(s.colour.x, 0.0);
+    EXPECT_LT(s.colour.x, 1.0);
+
+    scene::Light sun;
+    sun.parallel = true;
+    sun.position = {0, 10, 0};
+    sun.point_at = {0, 0, 0};
+    const auto p = prepare_lights({sun});
+    ASSERT_TRUE(illuminate(p[0], {5, 0, 3}, s));
+    EXPECT_NEAR(s.dir.y, 1, 1e-12);
+    EXPECT_NEAR(s.distance, 10, 1e-12);
+}
+
+TEST(Lights, AreaGridSpansTheWholeAxes) {
+    scene::Light l;
+    l.area = scene::AreaLight{{2, 0, 0}, {0, 0, 4}, 3, 5};
+    const auto p = prepare_lights({l});
+    const glm::dvec3 corner = area_sample_position(p[0], 0, 0, {0, 1, 0});
+    EXPECT_NEAR(corner.x, -1, 1e-12);
+    EXPECT_NEAR(corner.z, -2, 1e-12);
+    const glm::dvec3 last = area_sample_position(p[0], 2, 4, {0, 1, 0});
+    EXPECT_NEAR(last.x, 1, 1e-12);
+    EXPECT_NEAR(last.z, 2, 1e-12);
+}
+
+TEST(Shadows, InteriorFadeFormula) {
+    scene::Interior in;
+    in.fade_distance = 1;
+    in.fade_power = 2;
+    in.fade_colour = {0.5, 0.2, 0.2};
+    const glm::dvec3 a = interior_fade(in, 1.0, true);
+    EXPECT_NEAR(a.x, 0.5 + 0.5 / 2, 1e-12);
+    EXPECT_NEAR(a.y, 0.2 + 0.8 / 2, 1e-12);
+    in.fade_power = 0;
+    EXPECT_DOUBLE_EQ(interior_fade(in, 1.0, true).x, 1.0);  // shadow rays need fade_power > 0
+    EXPECT_LT(interior_fade(in, 1.0, false).x, 1.0);       // eye rays do not
+}
+
+}  // namespace
+}  // namespace lumen::render
