@@ -125,6 +125,22 @@ TEST(Csg, ClippedUnionPushesTheClipToChildren) {
     EXPECT_NEAR(h->t, 5.5, 1e-12);  // right sphere's far side at x = -0.5
 }
 
+TEST(Csg, ClipsOfCsgChildrenAreInWorldSpace) {
+    // The interpreter keeps clipped_by complete in world space, also on CSG children.
+    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    s->clipped_by = {make(scene::Box{{4, -2, -2}, {6, 0, 2}})};  // lower half, world
+    for (auto op : {CsgOp::Union, CsgOp::Merge}) {
+        auto parent = csg(op, {s, make(scene::Sphere{{0, 0, 20}, 1})});
+        parent->transform = translate({5, 0, 0});
+        Geometry g(scene_of({parent}));
+        auto h = trace(g, ray({5, 5, 0}, {0, -1, 0}));
+        ASSERT_TRUE(h);
+        EXPECT_NEAR(h->t, 6, 1e-12);
+        EXPECT_TRUE(Geometry::inside(*parent, {5, -0.5, 0}));
+        EXPECT_FALSE(Geometry::inside(*parent, {5, 0.5, 0}));
+    }
+}
+
 TEST(Csg, BoundedBySkipsRaysMissingTheBound) {
     auto s = make(scene::Sphere{{0, 0, 0}, 1});
     s->bounded_by = {make(scene::Box{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}})};

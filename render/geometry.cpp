@@ -85,6 +85,10 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
     hit.interior = leaf.interior;
     hit.interior_id = leaf.object;
+    hit.no_image = leaf.no_image;
+    hit.no_reflection = leaf.no_reflection;
+    hit.double_illuminate = leaf.double_illuminate;
+    hit.no_radiosity = leaf.no_radiosity;
     return true;
 }
 

@@ -104,6 +104,26 @@ TEST(GeometryFlags, NoShadowIsInheritedFromCsg) {
     EXPECT_FALSE(trace(g, ray({5, 0, -5}, {0, 0, 1}), true));
 }
 
+TEST(GeometryFlags, ImageFlagsAreInheritedFromCsg) {
+    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    s->double_illuminate = true;
+    auto m = csg(scene::CsgOp::Merge, {s});
+    m->no_image = true;
+    auto u = csg(scene::CsgOp::Union, {m});
+    u->no_reflection = true;
+    auto lone = make(scene::Sphere{{5, 0, 0}, 1});
+    Geometry g(scene_of({u, lone}));
+    auto h = trace(g, ray({0, 0, -5}, {0, 0, 1}));
+    ASSERT_TRUE(h);
+    EXPECT_TRUE(h->no_image);
+    EXPECT_TRUE(h->no_reflection);
+    EXPECT_TRUE(h->double_illuminate);
+    EXPECT_FALSE(h->no_radiosity);
+    auto l = trace(g, ray({5, 0, -5}, {0, 0, 1}));
+    ASSERT_TRUE(l);
+    EXPECT_FALSE(l->no_image || l->no_reflection || l->double_illuminate);
+}
+
 TEST(GeometryFlags, InverseFlipsNormalAndInside) {
     auto s = make(scene::Sphere{{0, 0, 0}, 1});
     s->inverse = true;

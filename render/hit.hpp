@@ -22,6 +22,11 @@ struct Hit {
     // "inside" the ray enters or leaves (the interior list of povray-semantics.md §5.1).
     const scene::Interior* interior = nullptr;
     const void* interior_id = nullptr;  // stable identity of the interior owner (for lists)
+    // Object flags after CSG inheritance: set when the primitive or any CSG ancestor has it
+    // (POV copies a CSG's flags to its children, so `union { ... no_image }` hides them all).
+    // Use these rather than object->no_image and friends.
+    bool no_image = false, no_reflection = false, double_illuminate = false,
+         no_radiosity = false;
 };
 
 }  // namespace lumen::render

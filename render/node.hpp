@@ -26,6 +26,8 @@ struct Node {
     bool inverse = false;    // inside/outside swapped (own `inverse` or subtracted)
     bool flip = false;       // normal flipped: odd number of inverses from the root down
     bool no_shadow = false;  // own or inherited from a CSG ancestor
+    bool no_image = false, no_reflection = false, double_illuminate = false,
+         no_radiosity = false;  // likewise (reported in Hit)
     double min_depth = kDepthDefault;
     scene::Transform xf;     // object -> world, ancestors included
     Aabb surface;            // world box of the points a hit can be at
@@ -53,7 +55,9 @@ struct NodeContext {
     scene::Transform to_world;                  // the parent's object -> world
     const scene::LayeredTexture* texture = nullptr;
     const scene::Interior* interior = nullptr;
-    bool no_shadow = false, invert = false, flip = false;
+    bool no_shadow = false, no_image = false, no_reflection = false, double_illuminate = false,
+         no_radiosity = false;
+    bool invert = false, flip = false;
     std::vector<uint32_t> clips;                // clip nodes pushed down from flattened unions
     std::vector<uint32_t> bounds;               // bounded_by nodes pushed down likewise
     int depth = 0;

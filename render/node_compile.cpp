@@ -65,18 +65,36 @@ bool transform_is_finite(const scene::Transform& xf) {
     return true;
 }
 
+// Flags a CSG hands down to everything inside it.
+template <class To>
+void inherit_flags(To& to, const NodeContext& ctx, const scene::Object& o) {
+    to.no_shadow = ctx.no_shadow || o.no_shadow;
+    to.no_image = ctx.no_image || o.no_image;
+    to.no_reflection = ctx.no_reflection || o.no_reflection;
+    to.double_illuminate = ctx.double_illuminate || o.double_illuminate;
+    to.no_radiosity = ctx.no_radiosity || o.no_radiosity;
+}
+
+void pass_flags(NodeContext& to, const Node& from) {
+    to.no_shadow = from.no_shadow;
+    to.no_image = from.no_image;
+    to.no_reflection = from.no_reflection;
+    to.double_illuminate = from.double_illuminate;
+    to.no_radiosity = from.no_radiosity;
+}
+
 uint32_t append_links(NodeStore& store, const std::vector<uint32_t>& items) {
     auto first = uint32_t(store.links.size());
     store.links.insert(store.links.end(), items.begin(), items.end());
     return first;
 }
 
-// Compiles clipped_by / bounded_by objects: they are already in the object's parent space.
+// Compiles clipped_by / bounded_by objects. The interpreter keeps them complete, in world
+// space, even on CSG children (transforming an object transforms its descendants' clips).
 std::vector<uint32_t> compile_helpers(NodeStore& store, const std::vector<scene::ObjectPtr>& objs,
                                       const NodeContext& ctx, bool accelerate,
                                       std::vector<uint32_t> inherited) {
-    NodeContext plain;
-    plain.to_world = ctx.to_world;
+    NodeContext plain;  // identity: world space
     plain.depth = ctx.depth + 1;
     for (const auto& o : objs)
         if (o) inherited.push_back(compile_object(store, *o, plain, accelerate));
@@ -100,7 +118,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     node.identity = node.xf.is_identity();
     node.inverse = object.inverse != ctx.invert;
     node.flip = ctx.flip != node.inverse;
-    node.no_shadow = ctx.no_shadow || object.no_shadow;
+    inherit_flags(node, ctx, object);
     node.texture = object.texture.empty() ? ctx.texture : &object.texture;
     node.interior = object.interior ? &*object.interior : ctx.interior;
 
@@ -115,7 +133,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         inner.to_world = node.xf;
         inner.texture = node.texture;
         inner.interior = node.interior;
-        inner.no_shadow = node.no_shadow;
+        pass_flags(inner, node);
         inner.flip = node.flip;
         inner.depth = ctx.depth + 1;
         std::vector<uint32_t> kids;
@@ -181,7 +199,7 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         inner.to_world = o.transform.then(ctx.to_world);
         inner.invert = o.inverse != ctx.invert;  // reaches the leaves' `inverse` (and flip)
         inner.flip = ctx.flip;
-        inner.no_shadow = ctx.no_shadow || o.no_shadow;
+        inherit_flags(inner, ctx, o);
         inner.texture = o.texture.empty() ? ctx.texture : &o.texture;
         inner.interior = o.interior ? &*o.interior : ctx.interior;
         inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
