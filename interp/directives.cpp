@@ -90,7 +90,8 @@ Flow Evaluator::run_if(const ast::Node& n, std::vector<Item>& out) {
 Flow Evaluator::run_ifdef(const ast::Node& n, std::vector<Item>& out) {
     bool defined = is_defined(*n.children.at(0));
     if (n.text == "ifndef") defined = !defined;
-    if (defined) return run_item(*n.children.at(1), out);
+    // children[1] / [2] are Branch nodes: {Null, Body}.
+    if (defined) return run_item(*n.children.at(1)->children.at(1), out);
     if (n.children.size() > 2) return run_item(*n.children[2]->children.at(1), out);
     return Flow::Normal;
 }
