@@ -220,6 +220,13 @@ NodePtr directive_word(NodePtr n, std::string_view t, BuildState&) {
     return n;
 }
 
+NodePtr declare(NodePtr n, std::string_view t, BuildState& st) {
+    // `deprecated ["once"] "message"` has no place in the tree: the interpreter does not
+    // warn about deprecated names.
+    if (!n->children.empty() && n->children.front()->kind == Kind::Null) pop_front(*n);
+    return directive_word(std::move(n), t, st);
+}
+
 NodePtr version(NodePtr n, std::string_view, BuildState&) {
     NodePtr& v = n->children.front();
     if (v->kind == Kind::Null) {  // `#version unofficial ...;`

@@ -237,12 +237,12 @@ template <bool Cmp>
 struct ternary_t : seq<disjunction<Cmp>, opt<ternary_tail<Cmp>>> {};
 
 // expression := ternary with comparisons: only inside '(' ')' and '[' ']', as in POV-Ray
-struct expression : ternary_t<true> {};
+struct expression : seq<ternary_t<true>> {};
 // plain_expression := ternary without top-level comparisons: everywhere else, so that
 // `box { <0,0,0> <1,1,1> }`, `[0 <0,1>]` and `Foo(off <1,2>)` read '<' as a new vector
-struct plain_expression : ternary_t<false> {};
+struct plain_expression : seq<ternary_t<false>> {};
 // vector_component := plain_expression ('>' closes the vector)
-struct vector_component : plain_expression {};
+struct vector_component : seq<plain_expression> {};
 
 // ---- items ----------------------------------------------------------------------------------
 
