@@ -1,0 +1,3 @@
+// substr() outside the string.
+#declare S = "abc";
+#declare T = substr(S, 2, 5);

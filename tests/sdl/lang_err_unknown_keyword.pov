@@ -1,0 +1,2 @@
+// A misspelt block keyword.
+spere { <0, 0, 0>, 1 }
