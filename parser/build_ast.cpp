@@ -211,6 +211,54 @@ NodePtr branch(NodePtr n, std::string_view, BuildState&) {
     return n;
 }
 
+namespace {
+
+NodePtr clone(const Node& n) {
+    auto c = std::make_unique<Node>(n.kind, n.loc);
+    c->text = n.text;
+    c->number = n.number;
+    c->flag = n.flag;
+    c->ops = n.ops;
+    c->params = n.params;
+    c->optional_params = n.optional_params;
+    c->raw_begin = n.raw_begin;
+    c->raw_end = n.raw_end;
+    c->raw_loc = n.raw_loc;
+    c->children.reserve(n.children.size());
+    for (const NodePtr& k : n.children) c->children.push_back(clone(*k));
+    return c;
+}
+
+// Branch(cond, Body(Block word items...)).
+NodePtr block_branch(NodePtr cond, const Node& word, std::vector<NodePtr> items) {
+    auto block = std::make_unique<Node>(Kind::Block, word.loc);
+    block->text = word.text;
+    block->children = std::move(items);
+    auto body = std::make_unique<Node>(Kind::Body, word.loc);
+    body->children.push_back(std::move(block));
+    auto branch = std::make_unique<Node>(Kind::Branch, cond->loc);
+    branch->children.push_back(std::move(cond));
+    branch->children.push_back(std::move(body));
+    return branch;
+}
+
+}  // namespace
+
+NodePtr conditional_block(NodePtr n, std::string_view, BuildState&) {
+    // children: condition, then-word, else-word, body items...
+    std::vector<NodePtr> kids = std::move(n->children);
+    n->children.clear();
+    std::vector<NodePtr> items, copies;
+    for (std::size_t i = 3; i < kids.size(); ++i) {
+        copies.push_back(clone(*kids[i]));
+        items.push_back(std::move(kids[i]));
+    }
+    auto no_condition = std::make_unique<Node>(Kind::Null, kids[2]->loc);
+    n->children.push_back(block_branch(std::move(kids[0]), *kids[1], std::move(items)));
+    n->children.push_back(block_branch(std::move(no_condition), *kids[2], std::move(copies)));
+    return n;
+}
+
 NodePtr directive_word(NodePtr n, std::string_view t, BuildState&) {
     std::size_t i = 1;  // after '#'
     while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;

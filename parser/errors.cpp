@@ -51,7 +51,7 @@ std::string directive_name(const Frame& f) {
     return std::string(directive_at(f.begin, f.begin + 64));
 }
 
-std::string close_brace_message(const BuildState& st, bool at_eof) {
+std::string close_brace_message(const BuildState& st, const char* p, const char* end) {
     using K = ast::Kind;
     const Frame* f = innermost(st, {K::Block, K::Default, K::ArrayInit});
     std::string what = "expected '}'";
@@ -65,8 +65,7 @@ std::string close_brace_message(const BuildState& st, bool at_eof) {
             what += " to close array initialiser";
         what += " opened at " + line_col(n.loc);
     }
-    if (at_eof) return what + ", found end of file";
-    return what;
+    return what + ", found " + describe_next(p, end);
 }
 
 std::string close_bracket_message(const BuildState& st) {

@@ -68,7 +68,7 @@ std::string line_col(const SourceLoc& loc);
 // The name a directive frame was opened with ("if", "while", ...).
 std::string directive_name(const Frame& f);
 
-std::string close_brace_message(const BuildState& st, bool at_eof);
+std::string close_brace_message(const BuildState& st, const char* p, const char* end);
 std::string close_bracket_message(const BuildState& st);
 std::string end_directive_message(const BuildState& st, bool at_eof);
 std::string end_of_file_message(const char* p, const char* end, std::string& hint);
@@ -84,7 +84,7 @@ std::string error_text(const ParseInput& in, const BuildState& st, std::string& 
     const char* end = in.end();
     namespace r = rules;
     if constexpr (std::is_same_v<Rule, r::close_brace>) {
-        return detail::close_brace_message(st, p == end);
+        return detail::close_brace_message(st, p, end);
     } else if constexpr (std::is_same_v<Rule, r::close_bracket>) {
         return detail::close_bracket_message(st) + ", found " + detail::describe_next(p, end);
     } else if constexpr (std::is_same_v<Rule, r::end_directive> ||

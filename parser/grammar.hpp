@@ -362,6 +362,16 @@ struct else_branch : seq<kw_else, sep, body> {};
 struct if_directive
     : seq<kw_if, sep, then_branch, star<elseif_branch>, opt<else_branch>, must<end_directive>> {};
 
+// A block whose keyword is chosen by a condition, closed after the #end (shapes.inc's
+// `#if (UseMerge) merge { #else union { #end ... }`). Built as an If whose two branches
+// each hold the whole block; the body items are copied into the second branch.
+// conditional_block := '#if' expr word '{' '#else' word '{' '#end' item* '}'
+struct conditional_word : word {};
+struct conditional_block
+    : seq<kw_if, sep, plain_expression, sep, conditional_word, sep, one<'{'>, sep, kw_else, sep,
+          conditional_word, sep, one<'{'>, sep, end_directive, star<item>,
+          must<close_brace>, sep> {};
+
 // ifdef := ('#ifdef' | '#ifndef') '(' word {'[' expression ']'} ')' body ['#else' body] '#end'
 struct open_paren : one<'('> {};
 struct ifdef_name : word {};
@@ -491,7 +501,7 @@ struct lone_hash : seq<one<'#'>, not_at<star<blank>, identifier_first>, sep> {};
 
 // directive := one of the above; an unknown '#word' is an error
 struct directive
-    : sor<declare_directive, if_directive, while_directive, for_directive, macro_directive,
+    : sor<declare_directive, conditional_block, if_directive, while_directive, for_directive, macro_directive,
           ifdef_directive, switch_directive, break_directive, include_directive,
           version_directive, undef_directive, default_directive, message_directive, fileio,
           lone_hash, seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
