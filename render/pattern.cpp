@@ -75,18 +75,25 @@ double square(const glm::dvec3& p) {
     return double(2 * (1 - b) + (a ^ b));
 }
 
-// Equilateral triangles of side 1 in the xz plane, six colours around every vertex.
-// (Layout not verified against POV-Ray.)
+long mod3(double v) { return ((long(v) % 3) + 3) % 3; }
+
+// Equilateral triangles of side 1 in the xz plane, in bands of height √3/2 whose upward
+// triangles alternate between half-integer and integer centres; six colours meet at every
+// vertex. Layout matched pixel by pixel against povray 3.7.
 double triangular(const glm::dvec3& p) {
     const double h = std::sqrt(3.0) / 2;
-    const double row = std::floor(p.z / h);
-    const double zz = p.z / h - row;  // 0..1 within the row
-    const double u = p.x - 0.5 * row;
-    const double cell = std::floor(u);
-    const double fu = u - cell;
-    const bool upper = zz > 1 - fu ? true : false;  // second triangle of the rhombus
-    const long k = long(cell) * 2 + (upper ? 1 : 0) + long(row) * 3;
-    return double(((k % 6) + 6) % 6);
+    const double band = std::floor(p.z / h);
+    const double v = p.z / h - band;  // 0 at the band's bottom edge
+    const double half_width = (1 - v) / 2;  // of the upward triangle at this height
+    const double fl = std::floor(p.x), nearest = std::floor(p.x + 0.5);
+    static constexpr int even_up[3] = {2, 4, 0}, even_down[3] = {1, 5, 3};
+    static constexpr int odd_up[3] = {4, 0, 2}, odd_down[3] = {3, 1, 5};
+    if (std::fmod(std::fabs(band), 2.0) == 0) {
+        if (std::fabs(p.x - (fl + 0.5)) < half_width) return even_up[mod3(fl)];
+        return even_down[mod3(nearest)];
+    }
+    if (std::fabs(p.x - nearest) < half_width) return odd_up[mod3(nearest)];
+    return odd_down[mod3(fl)];
 }
 
 double raw_value(const scene::Pattern& pat, const glm::dvec3& p) {

@@ -51,6 +51,10 @@ TEST(Pattern, HexagonSquareAndRadialDefaults) {
     EXPECT_LE(max_difference(pigment_of(scene::PatternType::Radial), "p_radial.ppm", 2, 0), 1);
 }
 
+TEST(Pattern, TriangularLayout) {
+    EXPECT_EQ(max_difference(pigment_of(scene::PatternType::Triangular), "p_triangular.ppm", 7, 0), 0);
+}
+
 TEST(Pattern, CheckerListForm) {
     scene::Pigment p = pigment_of(scene::PatternType::Checker);
     p.colour_map = {{0, rgb(1, 0, 0)}, {1, rgb(0, 0, 1)}};

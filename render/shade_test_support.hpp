@@ -113,6 +113,9 @@ public:
             hit.texture = o->texture.empty() ? nullptr : &o->texture;
             hit.interior = o->interior ? &*o->interior : nullptr;
             hit.interior_id = o.get();
+            hit.no_image = o->no_image;
+            hit.no_reflection = o->no_reflection;
+            hit.double_illuminate = o->double_illuminate;
         }
         return found;
     }

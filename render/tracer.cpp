@@ -96,9 +96,9 @@ bool Tracer::find_hit(const Ray& ray, RayKind kind, Hit& hit) const {
     for (int i = 0; i < kMaxSkippedSurfaces; ++i) {
         if (!geometry_.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
             return false;
-        const scene::Object* o = hit.object;
-        const bool invisible = o && ((kind == RayKind::Image && o->no_image) ||
-                                     (kind == RayKind::Reflection && o->no_reflection));
+        // Flags after CSG inheritance (a CSG's no_image hides all its children).
+        const bool invisible = (kind == RayKind::Image && hit.no_image) ||
+                               (kind == RayKind::Reflection && hit.no_reflection);
         if (!invisible) return true;
         t_min = hit.t;
     }
@@ -122,7 +122,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
-    apply_fog(c, *depth, ctx.interiors);
+    apply_fog(c, ray, *depth, ctx.interiors);
     return c;
 }
 
@@ -163,7 +163,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     resolve_layers(texture, hit.point, layers);
 
     const int quality = options_.quality;
-    const bool double_illuminate = hit.object && hit.object->double_illuminate;
+    const bool double_illuminate = hit.double_illuminate;
 
     // Relative IOR across this surface, only needed by fresnel reflection.
     InteriorList beyond;
@@ -274,8 +274,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 RayColour Tracer::sky(const glm::dvec3& dir) const {
     const scene::Colour& bg = scene_.background;
     RayColour out;
-    // Without alpha output the background's transmit only darkens it.
-    out.rgb = glm::dvec3(bg.r, bg.g, bg.b) * (1 - bg.t);
+    // The interpreter has already premultiplied the rgb by (1 − transmit) (§7.4).
+    out.rgb = glm::dvec3(bg.r, bg.g, bg.b);
     out.transmit = options_.alpha ? (bg == scene::Colour{} ? 1.0 : bg.t) : 0.0;
     if (!scene_.sky_sphere || scene_.sky_sphere->pigments.empty()) return out;
     const scene::SkySphere& sky = *scene_.sky_sphere;
@@ -292,13 +292,43 @@ RayColour Tracer::sky(const glm::dvec3& dir) const {
     return out;
 }
 
-void Tracer::apply_fog(RayColour& c, double depth, const InteriorList& interiors) const {
+namespace {
+
+// Fog density integrated along a ray segment of length `depth`: constant fog has density 1;
+// ground fog has density 1 below fog_offset and 1/(1 + ((y − offset)/alt)²) above it, y
+// measured along the fog's up vector. (The manual says 1/(1 + (y − offset)/alt)²; povray 3.7
+// renders match the form used here exactly.)
+double fog_width(const scene::Fog& fog, const Ray& ray, double depth) {
+    if (fog.type != 2) return depth;
+    const glm::dvec3 up = glm::length(fog.up) > 0 ? glm::normalize(fog.up) : glm::dvec3(0, 1, 0);
+    const double off = fog.offset, alt = fog.alt > 0 ? fog.alt : 1e-10;
+    auto density = [&](double y) {
+        if (y <= off) return 1.0;
+        const double u = (y - off) / alt;
+        return 1 / (1 + u * u);
+    };
+    auto integral = [&](double y) {  // antiderivative of the density
+        return y <= off ? y : off + alt * std::atan((y - off) / alt);
+    };
+    const double y1 = glm::dot(ray.origin, up);
+    const double dy = glm::dot(ray.dir, up);
+    if (std::fabs(dy) < 1e-10) return depth * density(y1);
+    return (integral(y1 + dy * depth) - integral(y1)) / dy;
+}
+
+}  // namespace
+
+void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
+                       const InteriorList& interiors) const {
     if (scene_.fogs.empty() || !interiors.empty()) return;
     for (const scene::Fog& fog : scene_.fogs) {
-        if (fog.distance <= 0) continue;
-        // Constant fog; ground fog (type 2) is approximated by constant fog.
-        const double k = std::max(std::exp(-depth / fog.distance), fog.colour.t);
-        c.rgb = k * c.rgb + (1 - k) * glm::dvec3(fog.colour.r, fog.colour.g, fog.colour.b);
+        if (fog.distance <= 0) continue;  // a zero distance means no fog
+        const glm::dvec3 fc(fog.colour.r, fog.colour.g, fog.colour.b);
+        // The fog's transmit is the least amount of the scene that shows through.
+        const double k = std::max(std::exp(-fog_width(fog, ray, depth) / fog.distance), fog.colour.t);
+        // A filtering fog tints what it lets through instead of adding its own colour.
+        const double f = fog.colour.f;
+        c.rgb = c.rgb * (k + (1 - k) * f * fc) + (1 - k) * (1 - f) * fc;
         c.transmit *= k;
     }
 }

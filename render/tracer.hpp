@@ -41,7 +41,7 @@ private:
     RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
                            const Context& ctx, ThreadState& state) const;
     RayColour sky(const glm::dvec3& dir) const;
-    void apply_fog(RayColour& c, double depth, const InteriorList& interiors) const;
+    void apply_fog(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors) const;
     bool find_hit(const Ray& ray, RayKind kind, Hit& hit) const;
 
     const scene::Scene& scene_;

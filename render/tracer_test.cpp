@@ -203,6 +203,38 @@ TEST(Tracer, MaxTraceLevelBetweenFacingMirrors) {
     EXPECT_EQ(ten.at(4, 3, 1), 187);
 }
 
+scene::Scene fog_stage() {
+    scene::Scene s = stage();
+    s.lights.push_back(point_light({-4, 6, -5}, {1, 1, 1}));
+    s.background = rgb(0.2, 0.3, 0.5);
+    Material floor;
+    floor.pigment = checker(rgb(1, 1, 1), rgb(0.1, 0.1, 0.1));
+    s.objects.push_back(plane({0, 1, 0}, -1, floor));
+    s.objects.push_back(sphere({0, 0, 2}, 1, {rgb(0.9, 0.5, 0.3)}));
+    return s;
+}
+
+TEST(Tracer, ConstantFog) {
+    scene::Scene s = fog_stage();
+    scene::Fog fog;
+    fog.distance = 6;
+    fog.colour = rgb(0.5, 0.6, 0.7);
+    s.fogs.push_back(fog);
+    expect_matches(s, "fog.ppm", 1);
+}
+
+TEST(Tracer, GroundFogWithTransmit) {
+    scene::Scene s = fog_stage();
+    scene::Fog fog;
+    fog.type = 2;
+    fog.distance = 3;
+    fog.colour = {0.8, 0.8, 0.8, 0, 0.1};
+    fog.offset = -0.5;
+    fog.alt = 0.5;
+    s.fogs.push_back(fog);
+    expect_matches(s, "groundfog.ppm", 1);
+}
+
 TEST(Tracer, UnsupportedFeatureIsAnError) {
     scene::Scene s = v1_scene(true);
     s.unsupported.push_back({"isosurface", {}});
