@@ -259,6 +259,26 @@ NodePtr conditional_block(NodePtr n, std::string_view, BuildState&) {
     return n;
 }
 
+NodePtr conditionally_opened(NodePtr n, std::string_view, BuildState&) {
+    // children: condition, word, body items..., close token (its condition is not kept)
+    std::vector<NodePtr> kids = std::move(n->children);
+    n->children.clear();
+    kids.pop_back();
+    std::vector<NodePtr> items, copies;
+    for (std::size_t i = 2; i < kids.size(); ++i) {
+        copies.push_back(clone(*kids[i]));
+        items.push_back(std::move(kids[i]));
+    }
+    n->children.push_back(block_branch(std::move(kids[0]), *kids[1], std::move(items)));
+    auto bare = std::make_unique<Node>(Kind::Branch, n->loc);
+    bare->children.push_back(std::make_unique<Node>(Kind::Null, n->loc));
+    auto body = std::make_unique<Node>(Kind::Body, n->loc);
+    body->children = std::move(copies);
+    bare->children.push_back(std::move(body));
+    n->children.push_back(std::move(bare));
+    return n;
+}
+
 NodePtr directive_word(NodePtr n, std::string_view t, BuildState&) {
     std::size_t i = 1;  // after '#'
     while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;

@@ -17,12 +17,13 @@ namespace fs = std::filesystem;
 
 const fs::path kPovShare = "/usr/share/povray-3.7";
 
-// Macros whose bodies open a block in one #if branch and close it in another
-// (`#if (M) merge { #else union { #end ... }`): only a token-level parser can read them.
+// Macros whose directives cut across block structure in ways only a token-level parser can
+// follow (the common `#if (M) merge { #else union { #end ... }` forms are supported).
 const std::set<std::string> kCrossStructuredMacros = {
-    "Bevelled_Text",    // shapes.inc
-    "Segment_of_Object",  // shapes3.inc
-    "MakeGrassPatch",   // makegrass.inc
+    "HFCreate_",             // shapes.inc: writes `mesh2 {` to a file or emits it
+    "MakeGrassPatch",        // makegrass.inc: same, for `mesh {`
+    "Round_Cylinder_Tube",   // shapes3.inc: `#if (F) difference { #end` closed with extra items
+    "Round_N_Tube_Polygon",  // shapes3.inc: `#local X = #if (F) #if (M) merge { ...`
 };
 
 // Scenes that POV-Ray 3.7 itself rejects.

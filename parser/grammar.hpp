@@ -372,6 +372,16 @@ struct conditional_block
           conditional_word, sep, one<'{'>, sep, end_directive, star<item>,
           must<close_brace>, sep> {};
 
+// A block opened and closed under the same condition (shapes3.inc's
+// `#if (A > 180) merge { #end ... #if (A > 180) } #end`). Built as an If whose first branch
+// holds the block and whose else branch holds a copy of the bare body items.
+// conditionally_opened := '#if' expr word '{' '#end' item* '#if' expr '}' '#end'
+// (conditional_close is a lookahead, so it must not parse items: errors inside would escape)
+struct conditional_close : seq<kw_if, sep, plain_expression, sep, one<'}'>, sep, kw_end> {};
+struct conditionally_opened
+    : seq<kw_if, sep, plain_expression, sep, conditional_word, sep, one<'{'>, sep,
+          end_directive, star<not_at<conditional_close>, item>, conditional_close, sep> {};
+
 // ifdef := ('#ifdef' | '#ifndef') '(' word {'[' expression ']'} ')' body ['#else' body] '#end'
 struct open_paren : one<'('> {};
 struct ifdef_name : word {};
@@ -501,7 +511,8 @@ struct lone_hash : seq<one<'#'>, not_at<star<blank>, identifier_first>, sep> {};
 
 // directive := one of the above; an unknown '#word' is an error
 struct directive
-    : sor<declare_directive, conditional_block, if_directive, while_directive, for_directive, macro_directive,
+    : sor<declare_directive, conditional_block, conditionally_opened, if_directive,
+          while_directive, for_directive, macro_directive,
           ifdef_directive, switch_directive, break_directive, include_directive,
           version_directive, undef_directive, default_directive, message_directive, fileio,
           lone_hash, seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
