@@ -11,6 +11,10 @@ namespace lumen::render {
 
 namespace {
 
+// Rejected hits one child may produce along a ray before it is given up on: a guard against
+// a root finder that returns the same surface again an ulp further on, forever.
+constexpr int kMaxRejected = 1024;
+
 template <class S>
 constexpr bool has_inside = requires(const S& s, const glm::dvec3& p) { inside(s, p); };
 
@@ -88,7 +92,8 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
         if (box.empty() || (box.finite() && !slab.hits(box, tmin, best))) continue;
         NodeHit h;
         double from = tmin;
-        while (intersect_node(store, c, ray, from, best, shadow, h)) {
+        for (int tries = 0; tries < kMaxRejected &&
+                            intersect_node(store, c, ray, from, best, shadow, h); ++tries) {
             if (n.kind == NodeKind::Union || csg_accepts(store, n, i, ray.at(h.shape.t))) {
                 best = h.shape.t;
                 hit = h;
@@ -108,7 +113,8 @@ bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, doub
     const Node& n = store.nodes[index];
     if (n.bound_count && !ray_meets_bounds(store, n, ray)) return false;
     double from = tmin;
-    while (intersect_unclipped(store, index, ray, from, tmax, shadow, hit)) {
+    for (int tries = 0; tries < kMaxRejected &&
+                        intersect_unclipped(store, index, ray, from, tmax, shadow, hit); ++tries) {
         if (n.clip_count == 0 || inside_all(store, n.clips, n.clip_count, ray.at(hit.shape.t)))
             return true;
         from = hit.shape.t;
