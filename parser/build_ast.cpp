@@ -29,6 +29,17 @@ void BuildState::close(Finisher finish, const char* end) {
     if (n) frames_.back().node->children.push_back(std::move(n));
 }
 
+void BuildState::wrap(Kind kind, const InputIterator& at, std::size_t mark, Finisher finish,
+                      const char* end) {
+    auto n = std::make_unique<Node>(kind, loc(at));
+    auto& kids = frames_.back().node->children;
+    n->children.assign(std::make_move_iterator(kids.begin() + std::ptrdiff_t(mark)),
+                       std::make_move_iterator(kids.end()));
+    kids.resize(mark);
+    NodePtr r = finish(std::move(n), std::string_view(at.data, std::size_t(end - at.data)), *this);
+    if (r) frames_.back().node->children.push_back(std::move(r));
+}
+
 void BuildState::enter(const InputIterator& at) {
     if (++depth_ > kMaxNesting)
         throw ParseError(loc(at), "nesting deeper than " + std::to_string(kMaxNesting) + " levels");

@@ -38,6 +38,9 @@ public:
     void discard() { frames_.pop_back(); }
     std::size_t mark() const { return frames_.back().node->children.size(); }
     void truncate(std::size_t mark) { frames_.back().node->children.resize(mark); }
+    // Moves the children appended since `mark` into a new node and appends its finished form.
+    void wrap(ast::Kind kind, const InputIterator& at, std::size_t mark, Finisher finish,
+              const char* end);
 
     void enter(const InputIterator& at);  // throws ParseError beyond kMaxNesting
     void leave() { --depth_; }
@@ -91,20 +94,30 @@ ast::NodePtr macro(ast::NodePtr n, std::string_view, BuildState&);
 template <typename Rule>
 struct node_traits {
     static constexpr bool builds = false;
+    static constexpr bool folds = false;
     static constexpr bool nests = false;
 };
 template <ast::Kind K, Finisher F = finish::keep, bool Nests = false>
 struct makes {
     static constexpr bool builds = true;
+    static constexpr bool folds = false;
     static constexpr bool nests = Nests;
     static constexpr ast::Kind kind = K;
     static constexpr Finisher finisher = F;
+};
+// A rule whose node is only made when it matched more than one child (operator chains,
+// postfix suffixes, ternaries): a lone operand is passed through without allocating.
+template <ast::Kind K, Finisher F>
+struct folding : makes<K, F> {
+    static constexpr bool builds = false;
+    static constexpr bool folds = true;
 };
 // A temporary node consumed by its parent's finisher (operator, name, suffix, ...).
 template <Finisher F = finish::text, bool Nests = false>
 using token = makes<ast::Kind::Null, F, Nests>;
 struct nests_only {
     static constexpr bool builds = false;
+    static constexpr bool folds = false;
     static constexpr bool nests = true;
 };
 
@@ -133,7 +146,7 @@ LUMEN_NODE(array_decl, makes<K::ArrayDecl, finish::array_decl>);
 LUMEN_NODE(array_init, makes<K::ArrayInit, finish::keep, true>);
 LUMEN_NODE(member_suffix, token<finish::member>);
 LUMEN_NODE(index_suffix, makes<K::Index, finish::keep, true>);
-LUMEN_NODE(postfix, makes<K::Null, finish::postfix>);
+LUMEN_NODE(postfix, folding<K::Null, finish::postfix>);
 LUMEN_NODE(unary_op, token<>);
 LUMEN_NODE(prefixed, makes<K::Unary, finish::named, true>);
 LUMEN_NODE(mul_op, token<>);
@@ -141,15 +154,15 @@ LUMEN_NODE(add_op, token<>);
 LUMEN_NODE(cmp_op, token<>);
 LUMEN_NODE(and_op, token<>);
 LUMEN_NODE(or_op, token<>);
-LUMEN_NODE(product, makes<K::Binary, finish::binary>);
-LUMEN_NODE(sum, makes<K::Binary, finish::binary>);
-LUMEN_NODE(comparison, makes<K::Binary, finish::binary>);
+LUMEN_NODE(product, folding<K::Binary, finish::binary>);
+LUMEN_NODE(sum, folding<K::Binary, finish::binary>);
+LUMEN_NODE(comparison, folding<K::Binary, finish::binary>);
 template <bool Cmp>
-struct node_traits<r::conjunction<Cmp>> : makes<K::Binary, finish::binary> {};
+struct node_traits<r::conjunction<Cmp>> : folding<K::Binary, finish::binary> {};
 template <bool Cmp>
-struct node_traits<r::disjunction<Cmp>> : makes<K::Binary, finish::binary> {};
+struct node_traits<r::disjunction<Cmp>> : folding<K::Binary, finish::binary> {};
 template <bool Cmp>
-struct node_traits<r::ternary_t<Cmp>> : makes<K::Ternary, finish::fold_one> {};
+struct node_traits<r::ternary_t<Cmp>> : folding<K::Ternary, finish::fold_one> {};
 template <bool Cmp>
 struct node_traits<r::ternary_tail<Cmp>> : nests_only {};
 
@@ -170,7 +183,7 @@ LUMEN_NODE(unofficial_version, token<>);
 LUMEN_NODE(version_directive, makes<K::Version, finish::version>);
 LUMEN_NODE(include_directive, makes<K::Include>);
 LUMEN_NODE(declare_name, makes<K::Ident, finish::text>);
-LUMEN_NODE(declare_target, makes<K::Null, finish::postfix>);
+LUMEN_NODE(declare_target, folding<K::Null, finish::postfix>);
 LUMEN_NODE(deprecation, token<finish::keep>);
 LUMEN_NODE(declare_directive, makes<K::Declare, finish::declare>);
 LUMEN_NODE(undef_name, token<>);
@@ -184,7 +197,7 @@ LUMEN_NODE(conditional_block, makes<K::If, finish::conditional_block, true>);
 LUMEN_NODE(conditional_close, token<>);
 LUMEN_NODE(conditionally_opened, makes<K::If, finish::conditionally_opened, true>);
 LUMEN_NODE(ifdef_name, makes<K::Ident, finish::text>);
-LUMEN_NODE(ifdef_target, makes<K::Null, finish::postfix>);
+LUMEN_NODE(ifdef_target, folding<K::Null, finish::postfix>);
 LUMEN_NODE(ifdef_then, makes<K::Branch, finish::branch>);
 LUMEN_NODE(ifdef_directive, makes<K::Ifdef, finish::directive_word>);
 LUMEN_NODE(case_clause, makes<K::Case>);

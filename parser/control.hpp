@@ -22,7 +22,13 @@ struct build_control : tao::pegtl::normal<Rule> {
         } else {
             if constexpr (traits::nests) st.enter(in.iterator());
             bool ok;
-            if constexpr (traits::builds) {
+            if constexpr (traits::folds) {
+                const InputIterator at = in.iterator();
+                const std::size_t mark = st.mark();
+                ok = base::template match<A, M, Action, Control>(in, st);
+                if (!ok) st.truncate(mark);
+                else if (st.mark() > mark + 1) st.wrap(traits::kind, at, mark, traits::finisher, in.current());
+            } else if constexpr (traits::builds) {
                 st.open(traits::kind, in.iterator());
                 ok = base::template match<A, M, Action, Control>(in, st);
                 if (ok) st.close(traits::finisher, in.current());
