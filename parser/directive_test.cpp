@@ -183,3 +183,30 @@ TEST(Comments, BlockCommentsNest) {
 
 }  // namespace
 }  // namespace lumen::parser
+
+namespace lumen::parser {
+namespace {
+
+using testing::items;
+
+TEST(ConditionalBlocks, KeywordChosenByIf) {
+    // shapes.inc: #if (UseMerge) merge { #else union { #end ... }
+    EXPECT_EQ(items("#if (M) merge { #else union { #end sphere { 0, 1 } }"),
+              "(If (Branch (Ident M) (Body (Block merge (Block sphere (Number 0) (Comma) (Number 1)))))"
+              " (Branch (Null) (Body (Block union (Block sphere (Number 0) (Comma) (Number 1))))))");
+}
+
+TEST(ConditionalBlocks, OpenedAndClosedUnderTheSameCondition) {
+    // shapes3.inc: #if (A > 180) merge { #end ... #if (A > 180) } #end
+    EXPECT_EQ(items("#if (A) merge { #end box { 0, 1 } #if (A) } #end"),
+              "(If (Branch (Ident A) (Body (Block merge (Block box (Number 0) (Comma) (Number 1)))))"
+              " (Branch (Null) (Body (Block box (Number 0) (Comma) (Number 1)))))");
+}
+
+TEST(ConditionalBlocks, OrdinaryIfIsUnaffected) {
+    EXPECT_EQ(items("#if (M) merge { } #else union { } #end"),
+              "(If (Branch (Ident M) (Body (Block merge))) (Branch (Null) (Body (Block union))))");
+}
+
+}  // namespace
+}  // namespace lumen::parser
