@@ -164,7 +164,7 @@ Json pattern(const scene::Pattern& p) {
     put_if(o, "octaves", double(p.octaves), double(d.octaves));
     put_if(o, "omega", p.omega, d.omega);
     put_if(o, "lambda", p.lambda, d.lambda);
-    put_transform(o, p.transform);
+    if (p.type != scene::PatternType::Plain) put_transform(o, p.transform);  // else unused
     if (p.unsupported) o.put("unsupported", unsupported_text(*p.unsupported));
     return o;
 }

@@ -1,0 +1,131 @@
+// Camera fix-ups (povray-semantics.md §1.2) and light sources (§6).
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "interp/build_test_support.hpp"
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildCamera = BuildTest;
+
+TEST_F(BuildCamera, DefaultsWhenNoCamera) {
+    scene::Camera c = run("sphere { 0, 1 }").camera;
+    expect_vec(c.right, {1.33, 0, 0});
+    expect_vec(c.direction, {0, 0, 1});
+}
+
+TEST_F(BuildCamera, AngleSetsDirectionLengthFromRight) {
+    scene::Camera c = run("camera { right x*2 angle 90 }").camera;
+    EXPECT_NEAR(glm::length(c.direction), 1.0, 1e-12);  // |R| / (2 tan 45)
+}
+
+TEST_F(BuildCamera, LookAtKeepsLengthsAndHandedness) {
+    scene::Camera c = run("camera { location <0,0,-5> direction z*2 look_at <5,0,0> }").camera;
+    expect_vec(c.location, {0, 0, -5});
+    EXPECT_NEAR(glm::length(c.direction), 2, 1e-12);
+    expect_vec(glm::normalize(c.direction), glm::normalize(glm::dvec3(5, 0, 5)));
+    EXPECT_NEAR(glm::length(c.right), 1.33, 1e-12);
+    expect_vec(c.up, {0, 1, 0});
+    // right = sky x direction: pointing to +x,-z for a camera looking along +x,+z
+    EXPECT_GT(c.right.x, 0);
+    EXPECT_LT(c.right.z, 0);
+    scene::Camera m = run("camera { right -x*1.33 look_at z }").camera;
+    EXPECT_NEAR(m.right.x, -1.33, 1e-12);  // left-handed right stays mirrored
+}
+
+TEST_F(BuildCamera, SkyTiltsUp) {
+    scene::Camera c = run("camera { sky <1,1,0> look_at z }").camera;
+    expect_vec(glm::normalize(c.up), glm::normalize(glm::dvec3(1, 1, 0)));
+}
+
+TEST_F(BuildCamera, OrthographicScaledByLookAtDistance) {
+    scene::Camera c = run("camera { orthographic location <0,0,-10> look_at 0 }").camera;
+    EXPECT_EQ(c.type, scene::CameraType::Orthographic);
+    EXPECT_NEAR(glm::length(c.right), 13.3, 1e-9);
+    EXPECT_NEAR(glm::length(c.up), 10, 1e-9);
+    scene::Camera u = run("camera { orthographic up y*2 right x*2 location <0,0,-10> look_at 0 }").camera;
+    EXPECT_NEAR(glm::length(u.up), 2, 1e-9);  // explicit up/right without angle: no scaling
+}
+
+TEST_F(BuildCamera, TransformsAppliedLast) {
+    scene::Camera c = run("camera { translate x location <0,0,-5> rotate y*90 }").camera;
+    expect_vec(c.location, {-5, 0, -1});  // (1,0,-5) rotated about y by 90
+    expect_vec(c.direction, {1, 0, 0});
+}
+
+TEST_F(BuildCamera, OtherTypesAndFocalBlurUnsupported) {
+    scene::Scene s = run("camera { fisheye angle 180 }");
+    EXPECT_EQ(s.camera.type, scene::CameraType::Other);
+    ASSERT_EQ(s.unsupported.size(), 1u);
+    EXPECT_EQ(s.unsupported[0].feature, "camera 'fisheye'");
+    EXPECT_EQ(run("camera { aperture 0.5 focal_point 0 blur_samples 20 }").unsupported[0].feature,
+              "focal blur");
+}
+
+TEST_F(BuildCamera, BadAngleIsAnError) {
+    EXPECT_EQ(error_of("camera { angle 200 }"),
+              "t.pov:1:10: error: camera angle must be between 0 and 180 degrees");
+}
+
+using BuildLight = BuildTest;
+
+TEST_F(BuildLight, PointLightColourAndLocation) {
+    scene::Scene s = run("light_source { <1,2,3>, rgb <1,0.5,0> }");
+    ASSERT_EQ(s.lights.size(), 1u);
+    expect_vec(s.lights[0].position, {1, 2, 3});
+    expect_vec(s.lights[0].colour, {1, 0.5, 0});
+    EXPECT_EQ(s.lights[0].loc.line, 1u);
+}
+
+TEST_F(BuildLight, SpotlightModifiersAndTransforms) {
+    scene::Light l = run("light_source { 0, 1 spotlight point_at x radius 10 falloff 20 "
+                         "tightness 5 fade_distance 3 fade_power 2 shadowless translate y }")
+                         .lights[0];
+    EXPECT_EQ(l.type, scene::LightType::Spot);
+    expect_vec(l.position, {0, 1, 0});
+    expect_vec(l.point_at, {1, 1, 0});
+    EXPECT_DOUBLE_EQ(l.radius, 10);
+    EXPECT_DOUBLE_EQ(l.falloff, 20);
+    EXPECT_DOUBLE_EQ(l.tightness, 5);
+    EXPECT_DOUBLE_EQ(l.fade_distance, 3);
+    EXPECT_TRUE(l.shadowless);
+}
+
+TEST_F(BuildLight, AreaLightAxesRotate) {
+    scene::Light l = run("light_source { 0, 1 area_light x*2, z*2, 3, 5 adaptive 1 jitter "
+                         "circular orient area_illumination rotate z*90 }")
+                         .lights[0];
+    ASSERT_TRUE(l.area.has_value());
+    expect_vec(l.area->axis1, {0, 2, 0});
+    EXPECT_EQ(l.area->size2, 5);
+    EXPECT_EQ(l.area->adaptive, 1);
+    EXPECT_TRUE(l.area->jitter && l.area->circular && l.area->orient);
+    EXPECT_TRUE(l.area_illumination);
+}
+
+TEST_F(BuildLight, LooksLikeMovedToLightAndNoShadow) {
+    scene::Light l = run("light_source { <0,5,0>, 1 looks_like { sphere { 0, 0.5 } } translate x }")
+                         .lights[0];
+    ASSERT_TRUE(l.looks_like);
+    EXPECT_TRUE(l.looks_like->no_shadow);
+    expect_vec(l.looks_like->transform.point({0, 0, 0}), {1, 5, 0});
+}
+
+TEST_F(BuildLight, CylinderAndParallel) {
+    scene::Light l = run("light_source { 0, 1 cylinder parallel point_at y }").lights[0];
+    EXPECT_EQ(l.type, scene::LightType::Cylinder);
+    EXPECT_TRUE(l.parallel);
+    EXPECT_DOUBLE_EQ(l.radius, 0.75);
+}
+
+TEST_F(BuildLight, Errors) {
+    EXPECT_EQ(error_of("light_source { 0, 1 jitter }"),
+              "t.pov:1:21: error: 'jitter' needs an area_light first");
+    EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 0, 1 }"),
+              "t.pov:1:41: error: area_light sizes must be at least 1");
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing

@@ -1,0 +1,111 @@
+// global_settings, background, fog, sky_sphere, the unsupported list and the JSON dump.
+#include "interp/build_test_support.hpp"
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildScene = BuildTest;
+
+TEST_F(BuildScene, GlobalSettings) {
+    scene::GlobalSettings g =
+        run("global_settings { assumed_gamma 1.0 max_trace_level 300 adc_bailout 0.01 "
+            "ambient_light rgb <1,0,0> irid_wavelength rgb 0.5 noise_generator 1 "
+            "number_of_waves 5 charset utf8 }")
+            .globals;
+    ASSERT_TRUE(g.assumed_gamma.has_value());
+    EXPECT_DOUBLE_EQ(*g.assumed_gamma, 1.0);
+    EXPECT_EQ(g.max_trace_level, 256);  // clamped
+    EXPECT_DOUBLE_EQ(g.adc_bailout, 0.01);
+    expect_vec(g.ambient_light, {1, 0, 0});
+    EXPECT_EQ(g.noise_generator, 1);
+    EXPECT_EQ(g.number_of_waves, 5);
+}
+
+TEST_F(BuildScene, OnlyFirstAssumedGammaCounts) {
+    scene::GlobalSettings g =
+        run("global_settings { assumed_gamma 2.2 }\nglobal_settings { assumed_gamma 1 }").globals;
+    EXPECT_DOUBLE_EQ(*g.assumed_gamma, 2.2);
+    EXPECT_FALSE(warnings.empty());
+}
+
+TEST_F(BuildScene, RadiosityAndPhotons) {
+    scene::Scene s = run("global_settings { radiosity { count 100, 2000 error_bound 0.5 "
+                         "always_sample off brightness 2 } photons { count 1000 } }");
+    ASSERT_TRUE(s.globals.radiosity.has_value());
+    EXPECT_EQ(s.globals.radiosity->count, 100);
+    EXPECT_EQ(s.globals.radiosity->count_pool, 2000);
+    EXPECT_DOUBLE_EQ(s.globals.radiosity->brightness, 2);
+    ASSERT_EQ(s.unsupported.size(), 1u);
+    EXPECT_EQ(s.unsupported[0].feature, "photons");
+}
+
+TEST_F(BuildScene, BackgroundPremultipliedByTransmit) {
+    scene::Colour b = run("background { rgbt <1, 0.5, 0, 0.5> }").background;
+    EXPECT_EQ(b, (scene::Colour{0.5, 0.25, 0, 0, 0.5}));
+}
+
+TEST_F(BuildScene, FogGround) {
+    scene::Scene s = run("fog { fog_type 2 distance 10 color rgb <0.5,0.5,0.5> fog_offset 1 "
+                         "fog_alt 2 up z translate y }");
+    ASSERT_EQ(s.fogs.size(), 1u);
+    const scene::Fog& f = s.fogs[0];
+    EXPECT_EQ(f.type, 2);
+    EXPECT_DOUBLE_EQ(f.distance, 10);
+    EXPECT_DOUBLE_EQ(f.alt, 2);
+    expect_vec(f.up, {0, 0, 1});
+    EXPECT_FALSE(f.transform.is_identity());
+    EXPECT_TRUE(s.unsupported.empty());
+    EXPECT_EQ(run("fog { distance 1 turbulence 0.5 }").unsupported[0].feature, "fog turbulence");
+}
+
+TEST_F(BuildScene, SkySphere) {
+    scene::Scene s = run("sky_sphere { pigment { gradient y } pigment { rgbt 1 } rotate x*10 emission 2 }");
+    ASSERT_TRUE(s.sky_sphere.has_value());
+    EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
+    EXPECT_DOUBLE_EQ(s.sky_sphere->emission, 2);
+    EXPECT_FALSE(s.sky_sphere->transform.is_identity());
+}
+
+TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
+    scene::Scene s = run(
+        "#declare P = pigment { granite }\n"
+        "sphere { 0, 1 pigment { P } }\n"
+        "sphere { 0, 1 pigment { P } }\n"
+        "camera { panoramic }\n"
+        "isosurface { function { x } }\n");
+    ASSERT_EQ(s.unsupported.size(), 3u);
+    EXPECT_EQ(s.unsupported[0].feature, "pattern 'granite'");
+    EXPECT_EQ(s.unsupported[1].feature, "camera 'panoramic'");
+    EXPECT_EQ(s.unsupported[2].feature, "isosurface");
+    EXPECT_EQ(s.unsupported[2].loc.line, 5u);
+}
+
+TEST_F(BuildScene, TopLevelValueThatCannotStandAlone) {
+    EXPECT_EQ(error_of("pigment { rgb 1 }"), "t.pov:1:1: error: a pigment cannot stand at top level");
+}
+
+TEST_F(BuildScene, DumpPrintsOnlyNonDefaults) {
+    std::string json = dump_scene_json(run("sphere { <0,-0,1>, 1 }"));
+    EXPECT_EQ(json,
+              "{\n"
+              "  \"objects\": [\n"
+              "    {\n"
+              "      \"loc\": \"t.pov:1:1\",\n"
+              "      \"type\": \"sphere\",\n"
+              "      \"center\": [0, 0, 1]\n"
+              "    }\n"
+              "  ]\n"
+              "}\n");
+}
+
+TEST_F(BuildScene, DumpEmptySceneIsEmptyObject) {
+    EXPECT_EQ(dump_scene_json(scene::Scene{}), "{}\n");
+}
+
+TEST_F(BuildScene, DumpIsDeterministic) {
+    const char* text = "union { sphere { 0, 1 } box { 0, 1 } pigment { checker } rotate 30 }";
+    EXPECT_EQ(dump_scene_json(run(text)), dump_scene_json(run(text)));
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing
