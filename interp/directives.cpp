@@ -44,30 +44,42 @@ Flow Evaluator::run_directive(const ast::Node& n, std::vector<Item>& out) {
     }
 }
 
-// The value of a #declare's right-hand side. Several texture blocks make a layered texture.
-Value Evaluator::declared_value(const ast::Node& n) {
-    if (n.children.size() < 2) throw LumenError(n.loc, "#" + n.text + " needs a value");
-    if (n.children.size() == 2) {
-        Value v = eval(*n.children[1]);
+// The value of a #declare's right-hand side, children[rhs..]. POV also allows a directive
+// there (`#declare S = #if (A) sphere {...} #else box {...} #end`), so the right-hand side
+// is run like a block body: it must give one value, or several textures (a layered texture).
+Value Evaluator::declared_value(const ast::Node& n, size_t rhs) {
+    if (n.children.size() <= rhs) throw LumenError(n.loc, "#" + n.text + " needs a value");
+    std::vector<Item> items;
+    if (n.children.size() == rhs + 1 && n.children[rhs]->kind != Kind::Call) {
+        if (run_item(*n.children[rhs], items) == Flow::Break)
+            throw LumenError(n.loc, "#break in the value of a #" + n.text);
+    } else {
+        for (size_t i = rhs; i < n.children.size(); ++i) items.push_back(Item{Item::Kind::Value, {}, eval(*n.children[i]), {}, n.children[i]->loc});
+    }
+    if (items.size() == 1 && items[0].kind == Item::Kind::Value) {
+        Value v = std::move(items[0].value);
         if (v.is<std::shared_ptr<ArrayValue>>())  // assignment copies an array
             v.v = std::make_shared<ArrayValue>(*v.as<std::shared_ptr<ArrayValue>>());
-        if (v.is<std::monostate>()) throw LumenError(n.children[1]->loc, "this produces no value to #" + n.text);
+        if (v.is<std::monostate>()) throw LumenError(items[0].loc, "this produces no value to #" + n.text);
         return v;
     }
+    if (items.empty()) throw LumenError(n.loc, "#" + n.text + " of '" + n.children[rhs - 1]->text + "' has no value");
     auto layered = std::make_shared<TextureValue>();
-    for (size_t i = 1; i < n.children.size(); ++i) {
-        Value v = eval(*n.children[i]);
-        if (!v.is<std::shared_ptr<const TextureValue>>()) type_error(v, "a texture (only textures can be layered)");
-        const auto& layers = v.as<std::shared_ptr<const TextureValue>>()->layers;
+    for (const Item& it : items) {
+        if (it.kind != Item::Kind::Value || !it.value.is<std::shared_ptr<const TextureValue>>())
+            throw LumenError(it.loc, "#" + n.text + " needs one value (several are allowed only for layered textures)");
+        const auto& layers = it.value.as<std::shared_ptr<const TextureValue>>()->layers;
         layered->layers.insert(layered->layers.end(), layers.begin(), layers.end());
     }
-    return Value{std::shared_ptr<const TextureValue>(std::move(layered)), n.children[1]->loc};
+    return Value{std::shared_ptr<const TextureValue>(std::move(layered)), items[0].loc};
 }
 
 void Evaluator::declare(const ast::Node& n) {
     bool local = n.text == "local";
-    const ast::Node& target = *n.children.at(0);
-    Value v = declared_value(n);
+    // `#declare deprecated [once] "message" Name = ...`: the parser keeps the message first.
+    size_t first = !n.children.empty() && n.children[0]->kind == Kind::String ? 1 : 0;
+    const ast::Node& target = *n.children.at(first);
+    Value v = declared_value(n, first + 1);
     if (target.kind == Kind::Ident) {
         if (local) symbols.local(target.text, std::move(v));
         else symbols.declare(target.text, std::move(v));

@@ -95,6 +95,8 @@ public:
     void call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out);
     // A macro call used as a value: must produce exactly one value item.
     Value call_macro_value(const ast::Node& macro, const ast::Node& call);
+    // A user-defined function called in an expression (user_functions.cpp).
+    Value call_function(const FunctionValue& fn, const ast::Node& call);
     // The Macro node a name refers to, or null.
     const ast::Node* macro_named(const std::string& name);
 
@@ -117,7 +119,7 @@ private:
     void fill_array(ArrayValue& arr, const ast::Node& init, size_t level, size_t& next);
 
     void declare(const ast::Node& node);
-    Value declared_value(const ast::Node& node);
+    Value declared_value(const ast::Node& node, size_t rhs);
     Flow run_if(const ast::Node& node, std::vector<Item>& out);
     Flow run_ifdef(const ast::Node& node, std::vector<Item>& out);
     Flow run_switch(const ast::Node& node, std::vector<Item>& out);

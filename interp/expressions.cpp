@@ -120,10 +120,10 @@ Value Evaluator::eval(const ast::Node& e) {
         case Kind::Call: {
             if (const ast::Node* m = macro_named(e.text)) return call_macro_value(*m, e);
             if (Value* f = symbols.find(e.text)) {
-                if (f->is<std::shared_ptr<const FunctionValue>>())
-                    throw LumenError(e.loc, "calling the user-defined " +
-                                                f->as<std::shared_ptr<const FunctionValue>>()->keyword +
-                                                " '" + e.text + "' in an expression is not supported");
+                if (f->is<std::shared_ptr<const FunctionValue>>()) {
+                    auto fn = f->as<std::shared_ptr<const FunctionValue>>();  // keeps it alive
+                    return call_function(*fn, e);
+                }
                 throw LumenError(e.loc, "'" + e.text + "' is a " + f->type_name() +
                                             ", not a macro or function");
             }
