@@ -1,0 +1,122 @@
+// The whole program on small scenes: exit statuses, output files, frames, --check, errors.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "cli/run.hpp"
+
+namespace lumen::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kScene =
+    "#version 3.7;\n"
+    "global_settings { assumed_gamma 1 }\n"
+    "camera { location <0, 0, -4> look_at 0 }\n"
+    "light_source { <3, 5, -4> rgb 1 }\n"
+    "sphere { <clock, 0, 0>, 1 pigment { rgb <1, 0.4, 0.2> } }\n";
+
+// Runs lumen in a scratch folder (the default output goes to the current folder).
+class RunTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("lumen_run_test_" + std::to_string(getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(dir_);
+        old_ = fs::current_path();
+        fs::current_path(dir_);
+    }
+    void TearDown() override {
+        fs::current_path(old_);
+        fs::remove_all(dir_);
+    }
+    void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+    // Runs with stdout captured into `out`.
+    int run(std::vector<std::string> args, std::string* out = nullptr) {
+        std::fflush(stdout);
+        const int saved = dup(fileno(stdout));
+        const fs::path capture = dir_ / "stdout.txt";
+        std::FILE* f = std::fopen(capture.c_str(), "w");
+        dup2(fileno(f), fileno(stdout));
+        const int status = run_command_line(args);
+        std::fflush(stdout);
+        dup2(saved, fileno(stdout));
+        close(saved);
+        std::fclose(f);
+        if (out) {
+            std::ifstream in(capture);
+            out->assign(std::istreambuf_iterator<char>(in), {});
+        }
+        return status;
+    }
+
+    fs::path dir_, old_;
+};
+
+TEST_F(RunTest, RendersToTheDefaultName) {
+    write("ball.pov", kScene);
+    EXPECT_EQ(run({"ball.pov", "+W16", "+H12"}), 0);
+    EXPECT_TRUE(fs::exists(dir_ / "ball.png"));
+    EXPECT_EQ(run({"ball.pov", "+W16", "+H12", "+FP", "+Oother"}), 0);
+    EXPECT_TRUE(fs::exists(dir_ / "other.ppm"));
+}
+
+TEST_F(RunTest, AnimationWritesNumberedFrames) {
+    write("anim.pov", kScene);
+    EXPECT_EQ(run({"anim.pov", "+W8", "+H6", "+KFI1", "+KFF10", "+SF9"}), 0);
+    EXPECT_FALSE(fs::exists(dir_ / "anim08.png"));  // before the subset
+    EXPECT_TRUE(fs::exists(dir_ / "anim09.png"));
+    EXPECT_TRUE(fs::exists(dir_ / "anim10.png"));
+}
+
+TEST_F(RunTest, ErrorsExitWithOneAndWriteNoImage) {
+    write("bad.pov", "#version 3.7;\nsphere { 0, 1 pigment { colour Nope } }\n");
+    EXPECT_EQ(run({"bad.pov", "+W8", "+H6"}), 1);
+    EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
+    EXPECT_EQ(run({"missing.pov"}), 1);
+    EXPECT_EQ(run({"bad.pov", "+Zz"}), 1);
+}
+
+TEST_F(RunTest, DeepLegalRecursionDoesNotOverflow) {
+    // 150 nested macro calls (under the interpreter's limit of 200) need a deep stack.
+    write("deep.pov",
+          "#version 3.7;\n#macro Down(n) #if (n > 0) Down(n - 1) #end #end\nDown(150)\n"
+          "camera { location -4 look_at 0 }\n");
+    EXPECT_EQ(run({"deep.pov", "--check"}), 0);
+}
+
+TEST_F(RunTest, CheckListsNothingForACoreScene) {
+    write("ball.pov", kScene);
+    std::string out;
+    EXPECT_EQ(run({"ball.pov", "--check"}, &out), 0);
+    EXPECT_EQ(out, "no unsupported features\n");
+    EXPECT_FALSE(fs::exists(dir_ / "ball.png"));
+}
+
+TEST_F(RunTest, DumpScenePrintsJson) {
+    write("ball.pov", kScene);
+    std::string out;
+    EXPECT_EQ(run({"ball.pov", "--dump-scene", "+K0.5"}, &out), 0);
+    ASSERT_FALSE(out.empty());
+    EXPECT_EQ(out.front(), '{');
+    EXPECT_NE(out.find("\"objects\""), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir_ / "ball.png"));
+}
+
+TEST_F(RunTest, HelpAndVersion) {
+    std::string out;
+    EXPECT_EQ(run({"--help"}, &out), 0);
+    EXPECT_NE(out.find("usage: lumen scene.pov"), std::string::npos);
+    EXPECT_NE(out.find("+KFI"), std::string::npos);
+    EXPECT_EQ(run({"--version"}, &out), 0);
+    EXPECT_EQ(out.rfind("lumen ", 0), 0u);
+}
+
+}  // namespace
+}  // namespace lumen::cli
