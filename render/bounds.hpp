@@ -65,9 +65,9 @@ struct SlabRay {
         for (int i = 0; i < 3; ++i) {
             double a = (b.lo[i] - origin[i]) * inv_dir[i];
             double c = (b.hi[i] - origin[i]) * inv_dir[i];
-            if (a > c) std::swap(a, c);
-            t0 = a > t0 ? a : t0;  // written so a NaN never wins
-            t1 = c < t1 ? c : t1;
+            double near = a < c ? a : c, far = a < c ? c : a;
+            t0 = near > t0 ? near : t0;  // written so a NaN never wins
+            t1 = far < t1 ? far : t1;
         }
         enter = t0;
         exit = t1;

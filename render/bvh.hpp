@@ -3,6 +3,7 @@
 // (a template, so the per-primitive test inlines: no std::function, no allocation per ray).
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "render/bounds.hpp"
@@ -32,24 +33,44 @@ public:
     // [tmin, tmax]. The visitor may lower tmax (nearest-hit search) to prune the rest.
     template <class Leaf>
     void traverse(const SlabRay& ray, double tmin, double& tmax, Leaf&& leaf) const {
-        if (nodes_.empty()) return;
-        uint32_t stack[kMaxDepth + 4];
+        if (nodes_.empty() || !ray.hits(nodes_[0].box, tmin, tmax)) return;
+        // Children are tested together; the nearer is visited first and the farther is
+        // stacked with its entry distance, so it is skipped if a hit came closer meanwhile.
+        struct Pending { uint32_t node; double enter; };
+        Pending stack[kMaxDepth + 4];
         int sp = 0;
         uint32_t cur = 0;
         for (;;) {
             const BvhNode& n = nodes_[cur];
-            if (ray.hits(n.box, tmin, tmax)) {
-                if (n.count) {
-                    for (uint32_t i = n.index, e = n.index + n.count; i < e; ++i) leaf(i);
-                } else {
-                    bool reverse = ray.inv_dir[n.axis] < 0;
-                    stack[sp++] = reverse ? cur + 1 : n.index;
-                    cur = reverse ? n.index : cur + 1;
+            if (n.count) {
+                for (uint32_t i = n.index, e = n.index + n.count; i < e; ++i) leaf(i);
+            } else {
+                uint32_t a = cur + 1, b = n.index;
+                double ta, tb, exit;
+                bool hit_a = ray.hits(nodes_[a].box, tmin, tmax, ta, exit);
+                bool hit_b = ray.hits(nodes_[b].box, tmin, tmax, tb, exit);
+                if (hit_a && hit_b) {
+                    if (tb < ta) {
+                        std::swap(a, b);
+                        std::swap(ta, tb);
+                    }
+                    stack[sp++] = {b, tb};
+                    cur = a;
+                    continue;
+                }
+                if (hit_a || hit_b) {
+                    cur = hit_a ? a : b;
                     continue;
                 }
             }
-            if (sp == 0) return;
-            cur = stack[--sp];
+            for (;;) {  // next stacked node still in front of the nearest hit
+                if (sp == 0) return;
+                const Pending& p = stack[--sp];
+                if (p.enter <= tmax) {
+                    cur = p.node;
+                    break;
+                }
+            }
         }
     }
 

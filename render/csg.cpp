@@ -75,8 +75,11 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
     const Node& n = store.nodes[index];
     if (n.kind == NodeKind::Shape) {
         if (shadow && n.no_shadow) return false;
-        LocalRay local = n.identity ? LocalRay{ray.origin, ray.dir}
-                                    : LocalRay{n.xf.inv_point(ray.origin), n.xf.inv_vector(ray.dir)};
+        LocalRay local{ray.origin, ray.dir};
+        if (!n.identity) {
+            const scene::Transform& xf = store.transforms[n.xf];
+            local = {xf.inv_point(ray.origin), xf.inv_vector(ray.dir)};
+        }
         if (!shape_intersect(store.shapes[n.shape], local, std::max(tmin, n.min_depth), tmax,
                              hit.shape))
             return false;
@@ -128,7 +131,7 @@ bool inside_node(const NodeStore& store, uint32_t index, const glm::dvec3& p) {
     bool in = false;
     switch (n.kind) {
     case NodeKind::Shape:
-        in = shape_inside(store.shapes[n.shape], n.identity ? p : n.xf.inv_point(p));
+        in = shape_inside(store.shapes[n.shape], n.identity ? p : store.transforms[n.xf].inv_point(p));
         break;
     case NodeKind::Union:
     case NodeKind::Merge:

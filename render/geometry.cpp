@@ -54,29 +54,31 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     uint32_t best_root = std::numeric_limits<uint32_t>::max();
     // Limit for the next candidate: hits at exactly best_t still compete, and the earlier
     // object in scene order wins, so coincident surfaces resolve the same way on every ray.
-    auto limit = [&] { return found ? std::nextafter(best_t, Aabb::inf) : best_t; };
+    double limit = t_max;
     auto test = [&](uint32_t root) {
         NodeHit h;
-        if (!intersect_node(store, root, ray, t_min, limit(), shadow, h)) return;
+        if (!intersect_node(store, root, ray, t_min, limit, shadow, h)) return;
         if (h.shape.t < best_t || (h.shape.t == best_t && root < best_root) || !found) {
             best = h;
             best_t = h.shape.t;
             best_root = root;
             found = true;
+            limit = std::nextafter(best_t, Aabb::inf);
         }
     };
     for (uint32_t r : impl_->unbounded) test(r);
-    double prune = limit();
+    double prune = limit;
     impl_->bvh.traverse(SlabRay(ray.origin, ray.dir), t_min, prune, [&](uint32_t i) {
         test(impl_->bounded[i]);
-        prune = limit();
+        prune = limit;
     });
     if (!found) return false;
 
     const Node& leaf = store.nodes[best.leaf];
     hit.t = best_t;
     hit.point = ray.at(best_t);
-    glm::dvec3 n = leaf.identity ? best.shape.normal : leaf.xf.normal(best.shape.normal);
+    glm::dvec3 n = leaf.identity ? best.shape.normal
+                                 : store.transforms[leaf.xf].normal(best.shape.normal);
     double len = glm::length(n);
     n = len > 0 && std::isfinite(len) ? n / len : glm::dvec3(0, 1, 0);
     hit.normal = leaf.flip ? -n : n;

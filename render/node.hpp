@@ -22,14 +22,14 @@ using ShapeData = std::variant<SphereShape, PlaneShape, BoxShape, ConeShape, Tor
 
 struct Node {
     NodeKind kind = NodeKind::Shape;
-    bool identity = true;    // xf is the identity (skip transforming rays)
+    bool identity = true;    // no transform left (baked into the shape, or none)
     bool inverse = false;    // inside/outside swapped (own `inverse` or subtracted)
     bool flip = false;       // normal flipped: odd number of inverses from the root down
     bool no_shadow = false;  // own or inherited from a CSG ancestor
     bool no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false;  // likewise (reported in Hit)
     double min_depth = kDepthDefault;
-    scene::Transform xf;     // object -> world, ancestors included
+    uint32_t xf = 0;         // NodeStore::transforms: object -> world (when !identity)
     Aabb surface;            // world box of the points a hit can be at
     Aabb solid;              // world box of the points that can be inside
     uint32_t shape = 0;      // index into NodeStore::shapes (Shape nodes)
@@ -45,7 +45,12 @@ struct NodeStore {
     std::vector<Node> nodes;
     std::vector<uint32_t> links;
     std::vector<ShapeData> shapes;
+    std::vector<scene::Transform> transforms;
 };
+
+// Replaces a primitive by the same shape in world space when its kind allows that under xf
+// (see shape_baking.cpp); false leaves the transform to be applied per ray.
+bool bake_transform(const scene::Shape& shape, const scene::Transform& xf, ShapeData& out);
 
 // CSG nesting deeper than this is refused (keeps every recursion bounded).
 constexpr int kMaxNesting = 1000;

@@ -114,8 +114,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
 
     Node node;
     node.object = &object;
-    node.xf = object.transform.then(ctx.to_world);
-    node.identity = node.xf.is_identity();
+    const scene::Transform world = object.transform.then(ctx.to_world);
     node.inverse = object.inverse != ctx.invert;
     node.flip = ctx.flip != node.inverse;
     inherit_flags(node, ctx, object);
@@ -130,7 +129,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
                     : csg->op == scene::CsgOp::Merge ? NodeKind::Merge
                                                      : NodeKind::Intersection;
         NodeContext inner;
-        inner.to_world = node.xf;
+        inner.to_world = world;
         inner.texture = node.texture;
         inner.interior = node.interior;
         pass_flags(inner, node);
@@ -156,13 +155,25 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         node.child_count = uint32_t(kids.size());
     } else {
         ShapeData data;
-        make_shape(object.shape, accelerate, data);
+        bool finite = transform_is_finite(world);
+        if (world.is_identity()) {
+            make_shape(object.shape, accelerate, data);
+        } else if (!finite || !bake_transform(object.shape, world, data)) {
+            make_shape(object.shape, accelerate, data);
+            node.identity = false;
+            node.xf = uint32_t(store.transforms.size());
+            store.transforms.push_back(world);
+        }
         node.min_depth = min_depth_of(data);
         Aabb surface, solid;
         shape_boxes(data, surface, solid);
-        if (!transform_is_finite(node.xf)) surface = solid = Aabb{};  // singular: never hit
-        node.surface = padded(transformed(surface, node.xf));
-        node.solid = padded(transformed(solid, node.xf));
+        if (!finite) surface = solid = Aabb{};  // singular transform: never hit
+        if (!node.identity) {
+            surface = transformed(surface, world);
+            solid = transformed(solid, world);
+        }
+        node.surface = padded(surface);
+        node.solid = padded(solid);
         node.shape = uint32_t(store.shapes.size());
         store.shapes.push_back(std::move(data));
     }
@@ -181,21 +192,21 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
 
 void compile_top_level(NodeStore& store, const scene::Object& object,
                        std::vector<uint32_t>& roots) {
-    // Explicit stack: unions nested thousands deep (loops building unions) stay flat.
-    struct Item { const scene::Object* object; NodeContext ctx; };
-    std::vector<Item> stack;
-    stack.push_back({&object, NodeContext{}});
+    // Explicit stack: unions nested thousands deep (loops building unions) stay flat. The
+    // children of one union share its context, stored once.
+    std::vector<NodeContext> contexts(1);
+    std::vector<std::pair<const scene::Object*, size_t>> stack{{&object, 0}};
     while (!stack.empty()) {
-        Item item = std::move(stack.back());
+        auto [obj, at] = stack.back();
         stack.pop_back();
-        const scene::Object& o = *item.object;
+        const scene::Object& o = *obj;
         auto* csg = std::get_if<scene::Csg>(&o.shape);
         if (!csg || csg->op != scene::CsgOp::Union) {
-            roots.push_back(compile_object(store, o, item.ctx));
+            roots.push_back(compile_object(store, o, contexts[at]));
             continue;
         }
-        const NodeContext& ctx = item.ctx;
         NodeContext inner;
+        const NodeContext& ctx = contexts[at];
         inner.to_world = o.transform.then(ctx.to_world);
         inner.invert = o.inverse != ctx.invert;  // reaches the leaves' `inverse` (and flip)
         inner.flip = ctx.flip;
@@ -204,8 +215,9 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         inner.interior = o.interior ? &*o.interior : ctx.interior;
         inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
         inner.bounds = compile_helpers(store, o.bounded_by, ctx, true, ctx.bounds);
+        contexts.push_back(std::move(inner));
         for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
-            if (*it) stack.push_back({it->get(), inner});
+            if (*it) stack.emplace_back(it->get(), contexts.size() - 1);
     }
 }
 
