@@ -117,3 +117,40 @@ TEST(Nesting, OtherDeepConstructs) {
 
 }  // namespace
 }  // namespace lumen::parser
+
+namespace lumen::parser {
+namespace {
+
+// Random token soup: every input either parses or gives a ParseError; nothing else escapes.
+TEST(Robustness, RandomTokenSoupNeverCrashes) {
+    const char* tokens[] = {"{", "}", "(", ")", "<", ">", "[", "]", ",", ";", "#if", "#else",
+                            "#end", "#declare", "#macro", "#while", "#switch", "#case", "=",
+                            "sphere", "x", "1", ".5", "\"s\"", "/*", "*/", "//", "\n", "-",
+                            "+", "*", "?", ":", "rgb", "color", "array", "function", "#", "."};
+    const std::size_t n = sizeof(tokens) / sizeof(tokens[0]);
+    unsigned seed = 12345;
+    auto next = [&] { return (seed = seed * 1103515245u + 12345u) >> 16; };
+    int parsed = 0, rejected = 0;
+    for (int round = 0; round < 3000; ++round) {
+        std::string text;
+        int len = int(next() % 40);
+        for (int i = 0; i < len; ++i) {
+            text += tokens[next() % n];
+            text += ' ';
+        }
+        SourceFile f{"soup.pov", text};
+        try {
+            parse_file(f);
+            ++parsed;
+        } catch (const ParseError& e) {
+            ++rejected;
+            EXPECT_GE(e.loc.line, 1u) << text;
+            EXPECT_LE(e.loc.byte, text.size()) << text;
+        }
+    }
+    EXPECT_GT(parsed, 0);
+    EXPECT_GT(rejected, 0);
+}
+
+}  // namespace
+}  // namespace lumen::parser

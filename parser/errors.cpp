@@ -17,6 +17,13 @@ std::string_view word_at(const char* p, const char* end) {
     return std::string_view(p, std::size_t(q - p));
 }
 
+// Concatenation by appending (GCC 12 warns falsely, -Wrestrict, on `"lit" + std::string`).
+std::string cat(std::initializer_list<std::string_view> parts) {
+    std::string out;
+    for (std::string_view p : parts) out.append(p);
+    return out;
+}
+
 // The word after '#' and blanks at p (p at '#').
 std::string_view directive_at(const char* p, const char* end) {
     ++p;
@@ -28,11 +35,11 @@ std::string_view directive_at(const char* p, const char* end) {
 
 std::string describe_next(const char* p, const char* end) {
     if (p >= end) return "end of file";
-    if (*p == '#') return "'#" + std::string(directive_at(p, end)) + "'";
+    if (*p == '#') return cat({"'#", directive_at(p, end), "'"});
     std::string_view w = word_at(p, end);
-    if (!w.empty()) return "'" + std::string(w.substr(0, 40)) + "'";
+    if (!w.empty()) return cat({"'", w.substr(0, 40), "'"});
     if (static_cast<unsigned char>(*p) < 0x20) return "a control character";
-    return "'" + std::string(1, *p) + "'";
+    return cat({"'", std::string_view(p, 1), "'"});
 }
 
 const Frame* innermost(const BuildState& st, std::initializer_list<ast::Kind> kinds) {
@@ -79,20 +86,19 @@ std::string end_directive_message(const BuildState& st, bool at_eof) {
     using K = ast::Kind;
     const Frame* f = innermost(st, {K::If, K::Ifdef, K::Switch, K::While, K::For, K::Macro});
     if (!f) return "expected #end";
-    std::string opener = "#" + directive_name(*f) + " at " + line_col(f->node->loc);
-    if (at_eof) return "missing #end for " + opener;
-    return "expected #end for " + opener;
+    return cat({at_eof ? "missing" : "expected", " #end for #", directive_name(*f), " at ",
+                line_col(f->node->loc)});
 }
 
 std::string end_of_file_message(const char* p, const char* end, std::string& hint) {
     if (p < end && *p == '#') {
         std::string_view d = directive_at(p, end);
         if (d == "end") return "#end without matching directive";
-        if (d == "else" || d == "elseif") return "#" + std::string(d) + " without matching #if";
-        if (d == "case" || d == "range") return "#" + std::string(d) + " outside #switch";
+        if (d == "else" || d == "elseif") return cat({"#", d, " without matching #if"});
+        if (d == "case" || d == "range") return cat({"#", d, " outside #switch"});
     }
     if (p < end && (*p == '}' || *p == ']' || *p == ')' || *p == '>'))
-        return "unmatched '" + std::string(1, *p) + "'";
+        return cat({"unmatched '", std::string_view(p, 1), "'"});
     (void)hint;
     return "unexpected " + describe_next(p, end);
 }

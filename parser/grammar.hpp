@@ -346,7 +346,7 @@ struct deprecation : seq<TAO_PEGTL_KEYWORD("deprecated"), sep,
                          opt<TAO_PEGTL_KEYWORD("once"), sep>, must<string_literal>> {};
 struct declare_directive
     : seq<sor<kw_declare, kw_local>, sep, opt<deprecation, sep>,
-          sor<seq<at<reserved_declare_name>, raise<reserved_declare_name>>,
+          sor<seq<at<reserved_declare_name>, pegtl::raise<reserved_declare_name>>,
               must<declare_target>>,
           sep,
           must<equals_sign>, sep, must<declare_rhs>, sep, optional_semicolon> {};
@@ -515,7 +515,7 @@ struct directive
           while_directive, for_directive, macro_directive,
           ifdef_directive, switch_directive, break_directive, include_directive,
           version_directive, undef_directive, default_directive, message_directive, fileio,
-          lone_hash, seq<at<one<'#'>>, not_at<body_terminator>, raise<unknown_directive>>> {};
+          lone_hash, seq<at<one<'#'>>, not_at<body_terminator>, pegtl::raise<unknown_directive>>> {};
 
 // ---- entry points ---------------------------------------------------------------------------
 
