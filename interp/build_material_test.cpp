@@ -188,7 +188,7 @@ TEST_F(BuildMaterial, Errors) {
     EXPECT_EQ(error_of("sphere { 0, 1 finish { phong_size 2 checker } }"),
               "t.pov:1:37: error: 'checker' is not a finish keyword");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { color_map { [0.5] } } }"),
-              "t.pov:1:38: error: expected a colour in color_map entry, found the end of the color_map entry");
+              "t.pov:1:38: error: expected a colour in color_map entry, found the end of the block");
 }
 
 }  // namespace

@@ -181,7 +181,7 @@ TEST_F(BuildObject, Errors) {
     EXPECT_EQ(error_of("sphere { 0, 1 translate \"x\" }"),
               "t.pov:1:25: error: expected a vector after 'translate', found a string");
     EXPECT_EQ(error_of("sphere { 0 }"),
-              "t.pov:1:10: error: expected a float in sphere, found the end of the sphere");
+              "t.pov:1:10: error: expected a float in sphere, found the end of the block");
     EXPECT_EQ(error_of("plane { 0, 1 }"), "t.pov:1:9: error: the plane normal is a zero vector");
     EXPECT_EQ(error_of("sphere { 0, 1 phong 1 }"), "t.pov:1:15: error: 'phong' is not a sphere keyword");
     EXPECT_EQ(error_of("cylinder { 0, 1, 1 sturm }"),

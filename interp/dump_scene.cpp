@@ -59,7 +59,8 @@ void print(const Json& j, int indent, std::string& out) {
         case Json::Kind::Bool: out += j.flag ? "true" : "false"; return;
         case Json::Kind::Array: {
             bool inline_form = true;
-            for (const Json& e : j.items) inline_form = inline_form && e.scalar();
+            for (const Json& e : j.items)  // numbers on one line, strings one per line
+                inline_form = inline_form && e.scalar() && e.kind != Json::Kind::String;
             out += "[";
             for (size_t i = 0; i < j.items.size(); ++i) {
                 if (inline_form) out += i ? ", " : "";
@@ -348,13 +349,19 @@ struct ShapeDumper {
         for (const auto& v : m.vertices) vs.push(vec(v));
         for (const auto& n : m.normals) ns.push(vec(n));
         for (const auto& uv : m.uvs) uvs.push(Json::array().push(Json::num(uv.x)).push(Json::num(uv.y)));
+        auto triple = [](const std::array<int, 3>& t) {
+            return Json::array().push(Json::num(t[0])).push(Json::num(t[1])).push(Json::num(t[2]));
+        };
+        // A face is its vertex triple, or {"v", "n", "tex"} when it has normals or textures.
         for (const auto& f : m.faces) {
-            Json face = Json::array();
-            for (int i : f.v) face.push(Json::num(i));
-            if (f.n[0] >= 0 || f.tex[0] >= 0)
-                for (int i : f.n) face.push(Json::num(i));
-            if (f.tex[0] >= 0)
-                for (int i : f.tex) face.push(Json::num(i));
+            if (f.n[0] < 0 && f.tex[0] < 0) {
+                fs.push(triple(f.v));
+                continue;
+            }
+            Json face;
+            face.put("v", triple(f.v));
+            if (f.n[0] >= 0) face.put("n", triple(f.n));
+            if (f.tex[0] >= 0) face.put("tex", triple(f.tex));
             fs.push(face);
         }
         for (const auto& t : m.textures) ts.push(layered(t));

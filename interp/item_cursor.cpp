@@ -135,7 +135,7 @@ void ItemCursor::warn(SourceLoc loc, const std::string& message) {
 void ItemCursor::fail_expected(std::string_view what_expected, std::string_view after) {
     std::string msg = "expected " + std::string(what_expected);
     msg += after.empty() ? " in " + what_ : " after '" + std::string(after) + "'";
-    if (at_end()) fail(here(), msg + ", found the end of the " + what_);
+    if (at_end()) fail(here(), msg + ", found the end of the block");
     fail(peek().loc, msg + ", found " + describe_item(peek()));
 }
 

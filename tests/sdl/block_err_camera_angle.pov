@@ -1,0 +1,1 @@
+camera { location -z*5 angle 180 }

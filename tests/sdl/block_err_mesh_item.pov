@@ -1,0 +1,1 @@
+mesh { triangle { 0, x, y } sphere { 0, 1 } }
