@@ -99,6 +99,12 @@ TEST_F(ExpressionTest, Members) {
 
 TEST_F(ExpressionTest, Strings) {
     EXPECT_EQ(str("\"abc\""), "abc");
+    run("#declare S = \"abc\";");
+    EXPECT_DOUBLE_EQ(number("S != \"\""), 1);  // strings compare like strcmp (POV-Ray 3.7)
+    EXPECT_DOUBLE_EQ(number("S = \"abc\""), 1);
+    EXPECT_DOUBLE_EQ(number("S < \"abd\""), 1);
+    EXPECT_DOUBLE_EQ(number("\"b\" > \"a\""), 1);
+    EXPECT_DOUBLE_EQ(number("\"b\" <= \"a\""), 0);
     EXPECT_EQ(expr_error("\"a\" + 1"), "expr:1:1: error: expected a float, vector or colour, found a string");
 }
 

@@ -56,7 +56,13 @@ double compare(const std::string& op, double a, double b) {
 // One binary operation, with the arithmetic ones applied per component after promotion.
 static Value apply_binary(Evaluator& ev, const std::string& op, const Value& a, const Value& b,
                           SourceLoc loc) {
-    if (is_comparison(op)) return Value{compare(op, to_float(a), to_float(b)), loc};
+    if (is_comparison(op)) {
+        if (a.is<std::string>() && b.is<std::string>()) {  // POV-Ray 3.7 compares strings too
+            int c = a.as<std::string>().compare(b.as<std::string>());
+            return Value{compare(op, c < 0 ? -1 : c > 0 ? 1 : 0, 0), loc};
+        }
+        return Value{compare(op, to_float(a), to_float(b)), loc};
+    }
     if (op == "&") return Value{double(to_bool(a) && to_bool(b)), loc};
     if (op == "|") return Value{double(to_bool(a) || to_bool(b)), loc};
 
