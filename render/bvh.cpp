@@ -18,27 +18,36 @@ struct Bin {
 
 }  // namespace
 
+// Primitives are partitioned by value (box and centre together) so the build streams through
+// memory instead of chasing indices.
+struct Bvh::Prim {
+    Aabb box;
+    glm::dvec3 centre;
+    uint32_t index;
+};
+
 void Bvh::build(const std::vector<Aabb>& boxes, int max_leaf) {
     nodes_.clear();
     depth_ = 0;
     order_.resize(boxes.size());
     std::iota(order_.begin(), order_.end(), 0u);
     if (boxes.empty()) return;
-    std::vector<glm::dvec3> centres(boxes.size());
-    for (size_t i = 0; i < boxes.size(); ++i) centres[i] = boxes[i].centre();
+    std::vector<Prim> prims(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i) prims[i] = {boxes[i], boxes[i].centre(), uint32_t(i)};
     nodes_.reserve(2 * boxes.size());
-    build_range(boxes, centres, 0, uint32_t(boxes.size()), 0, std::clamp(max_leaf, 1, 255));
+    build_range(prims, 0, uint32_t(boxes.size()), 0, std::clamp(max_leaf, 1, 255));
+    for (size_t i = 0; i < prims.size(); ++i) order_[i] = prims[i].index;
 }
 
-uint32_t Bvh::build_range(const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres,
-                          uint32_t begin, uint32_t end, int depth, int max_leaf) {
+uint32_t Bvh::build_range(std::vector<Prim>& prims, uint32_t begin, uint32_t end, int depth,
+                          int max_leaf) {
     depth_ = std::max(depth_, depth + 1);
     uint32_t self = uint32_t(nodes_.size());
     nodes_.emplace_back();
     Aabb box, cbox;
     for (uint32_t i = begin; i < end; ++i) {
-        box.expand(boxes[order_[i]]);
-        cbox.expand(centres[order_[i]]);
+        box.expand(prims[i].box);
+        cbox.expand(prims[i].centre);
     }
     nodes_[self].box = box;
     uint32_t count = end - begin;
@@ -59,9 +68,9 @@ uint32_t Bvh::build_range(const std::vector<Aabb>& boxes, const std::vector<glm:
             Bin bins[kBins];
             double scale = kBins / extent;
             for (uint32_t i = begin; i < end; ++i) {
-                int b = std::min(kBins - 1, int((centres[order_[i]][axis] - lo) * scale));
+                int b = std::min(kBins - 1, int((prims[i].centre[axis] - lo) * scale));
                 bins[b].count++;
-                bins[b].box.expand(boxes[order_[i]]);
+                bins[b].box.expand(prims[i].box);
             }
             double right_area[kBins];
             uint32_t right_count[kBins];
@@ -100,21 +109,21 @@ uint32_t Bvh::build_range(const std::vector<Aabb>& boxes, const std::vector<glm:
     int axis = best_axis;
     if (best_axis >= 0) {
         double lo = cbox.lo[axis], scale = kBins / (cbox.hi[axis] - lo);
-        auto it = std::partition(order_.begin() + begin, order_.begin() + end, [&](uint32_t p) {
-            return std::min(kBins - 1, int((centres[p][axis] - lo) * scale)) <= best_bin;
+        auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const Prim& p) {
+            return std::min(kBins - 1, int((p.centre[axis] - lo) * scale)) <= best_bin;
         });
-        mid = uint32_t(it - order_.begin());
+        mid = uint32_t(it - prims.begin());
     }
     if (mid == begin || mid == end) {  // no useful SAH split (or too deep): median by count
         glm::dvec3 ext = cbox.hi - cbox.lo;
         axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
         mid = begin + count / 2;
-        std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                         [&](uint32_t a, uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+        std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
+                         [&](const Prim& a, const Prim& b) { return a.centre[axis] < b.centre[axis]; });
     }
     nodes_[self].axis = uint8_t(axis);
-    build_range(boxes, centres, begin, mid, depth + 1, max_leaf);
-    uint32_t right = build_range(boxes, centres, mid, end, depth + 1, max_leaf);
+    build_range(prims, begin, mid, depth + 1, max_leaf);
+    uint32_t right = build_range(prims, mid, end, depth + 1, max_leaf);
     nodes_[self].index = right;
     return self;
 }

@@ -79,8 +79,9 @@ public:
     static constexpr int kMaxDepth = 100;
 
 private:
-    uint32_t build_range(const std::vector<Aabb>& boxes, const std::vector<glm::dvec3>& centres,
-                         uint32_t begin, uint32_t end, int depth, int max_leaf);
+    struct Prim;
+    uint32_t build_range(std::vector<Prim>& prims, uint32_t begin, uint32_t end, int depth,
+                         int max_leaf);
     std::vector<BvhNode> nodes_;
     std::vector<uint32_t> order_;
     int depth_ = 0;

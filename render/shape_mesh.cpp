@@ -33,6 +33,9 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
     std::vector<TriangleCore> tris;
     std::vector<uint32_t> faces;
     std::vector<Aabb> boxes;
+    tris.reserve(m.faces.size());
+    faces.reserve(m.faces.size());
+    boxes.reserve(m.faces.size());
     for (size_t f = 0; f < m.faces.size(); ++f) {
         const auto& v = m.faces[f].v;
         if (!valid_index(v[0], m.vertices.size()) || !valid_index(v[1], m.vertices.size()) ||
