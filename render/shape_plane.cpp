@@ -25,8 +25,10 @@ bool intersect(const PlaneShape& s, const LocalRay& r, double tmin, double tmax,
     return true;
 }
 
+// POV counts points within 1e-10 of the plane as inside (so a clip plane through a face
+// keeps that face).
 bool inside(const PlaneShape& s, const glm::dvec3& p) {
-    return s.valid && glm::dot(s.normal, p) < s.distance;
+    return s.valid && glm::dot(s.normal, p) - s.distance < 1e-10;
 }
 
 Aabb bounds(const PlaneShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
