@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,31 @@ TEST(Bvh, ThousandRandomSpheresMatchBruteForce) {
         EXPECT_EQ(h->object, objects[which].get());
     }
     EXPECT_GT(hits, 1000);
+}
+
+TEST(Bvh, ConcurrentQueriesAgreeWithSerialOnes) {
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> u(-5, 5);
+    std::vector<scene::ObjectPtr> objects;
+    for (int i = 0; i < 200; ++i)
+        objects.push_back(make(scene::Torus{0.5, 0.2, false}, translate({u(rng), u(rng), u(rng)})));
+    auto merged = csg(scene::CsgOp::Merge, {make(scene::Sphere{{0, 0, 0}, 2}),
+                                            make(scene::Box{{0, 0, 0}, {3, 3, 3}})});
+    objects.push_back(merged);
+    Geometry g(scene_of(objects));
+    std::vector<Ray> rays;
+    for (int i = 0; i < 4000; ++i) rays.push_back(ray({u(rng), u(rng), -10}, {u(rng) * 0.1, u(rng) * 0.1, 1}));
+    std::vector<double> serial(rays.size(), -1), parallel(rays.size(), -1);
+    for (size_t i = 0; i < rays.size(); ++i)
+        if (auto h = trace(g, rays[i])) serial[i] = h->t;
+    std::vector<std::thread> threads;
+    for (int k = 0; k < 4; ++k)
+        threads.emplace_back([&, k] {
+            for (size_t i = k; i < rays.size(); i += 4)
+                if (auto h = trace(g, rays[i])) parallel[i] = h->t;
+        });
+    for (auto& t : threads) t.join();
+    EXPECT_EQ(serial, parallel);
 }
 
 TEST(Bvh, HundredThousandTriangleMeshIsFast) {
