@@ -87,7 +87,8 @@ double povray_reference(const SceneEntry& e, const fs::path& ref_png, std::strin
     return secs;
 }
 
-int run_scene(const SceneEntry& e, const fs::path& out, const std::string& lumen) {
+int run_scene(const SceneEntry& e, const fs::path& out, const std::string& lumen,
+              const std::vector<std::string>& listed) {
     if (std::system("command -v povray >/dev/null 2>&1") != 0) {
         std::cout << "povray is not installed: skipping " << e.name << "\n";
         return kSkip;
@@ -128,7 +129,7 @@ int run_scene(const SceneEntry& e, const fs::path& out, const std::string& lumen
             }
         }
     }
-    record_result(out.string(), r);
+    record_result(out.string(), r, listed);
     std::printf("%-40s PSNR %8.2f dB (floor %.0f)  max error %3d  lumen %.2f s  povray %.2f s  %s\n",
                 e.name.c_str(), r.psnr, e.min_psnr, r.max_error, r.lumen_seconds, r.povray_seconds,
                 r.passed ? "PASS" : "FAIL");
@@ -161,11 +162,13 @@ int main(int argc, char** argv) {
     }
     try {
         const auto entries = read_scene_list(args["list"], args["root"], kPovrayScenes);
+        std::vector<std::string> listed;
+        for (const SceneEntry& e : entries) listed.push_back(e.name);
         int failures = 0, matched = 0;
         for (const SceneEntry& e : entries) {
             if (!args.count("all") && e.name != args["scene"] && e.scene != args["scene"]) continue;
             ++matched;
-            const int status = run_scene(e, args["out"], args["lumen"]);
+            const int status = run_scene(e, args["out"], args["lumen"], listed);
             if (status == kSkip) return kSkip;
             failures += status != 0;
         }

@@ -84,10 +84,12 @@ std::string image_cell(const std::string& src) {
            "\" loading=\"lazy\"></a></td>";
 }
 
-void write_index(const fs::path& out_dir) {
+void write_index(const fs::path& out_dir, const std::vector<std::string>& listed) {
     std::vector<Result> results;
-    for (const auto& entry : fs::directory_iterator(out_dir / "results"))
-        if (entry.path().extension() == ".txt") results.push_back(load(entry.path()));
+    for (const std::string& name : listed) {
+        const fs::path p = out_dir / "results" / (name + ".txt");
+        if (fs::exists(p)) results.push_back(load(p));
+    }
     std::sort(results.begin(), results.end(),
               [](const Result& a, const Result& b) { return a.name < b.name; });
     const size_t passed = size_t(std::count_if(results.begin(), results.end(),
@@ -122,13 +124,14 @@ void write_index(const fs::path& out_dir) {
 
 }  // namespace
 
-void record_result(const std::string& out_dir, const Result& r) {
+void record_result(const std::string& out_dir, const Result& r,
+                   const std::vector<std::string>& listed) {
     const fs::path dir = fs::path(out_dir) / "results";
     fs::create_directories(dir);
     const fs::path tmp = dir / (r.name + ".tmp");
     save(tmp, r);
     fs::rename(tmp, dir / (r.name + ".txt"));
-    write_index(out_dir);
+    write_index(out_dir, listed);
 }
 
 }  // namespace lumen::differential

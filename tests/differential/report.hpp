@@ -17,8 +17,10 @@ struct Result {
     std::string message;  // why it failed (lumen error, size mismatch, ...)
 };
 
-// Writes <out>/results/<name>.txt, then rebuilds <out>/index.html from every results file
-// (written to a temporary file and renamed, so readers never see half a page).
-void record_result(const std::string& out_dir, const Result& r);
+// Writes <out>/results/<name>.txt, then rebuilds <out>/index.html from the results files of the
+// scenes in `listed` (scenes dropped from the list are left out), written to a temporary file
+// and renamed, so readers never see half a page.
+void record_result(const std::string& out_dir, const Result& r,
+                   const std::vector<std::string>& listed);
 
 }  // namespace lumen::differential
