@@ -321,16 +321,23 @@ double fog_width(const scene::Fog& fog, const Ray& ray, double depth) {
 void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
                        const InteriorList& interiors) const {
     if (scene_.fogs.empty() || !interiors.empty()) return;
+    // Every fog attenuates what is behind it and adds its own colour; the added colours are
+    // summed without attenuating each other.
+    glm::dvec3 attenuation(1), added(0);
+    double transmit = 1;
     for (const scene::Fog& fog : scene_.fogs) {
-        if (fog.distance <= 0) continue;  // a zero distance means no fog
+        if (std::fabs(fog.distance) <= 1e-10) continue;  // a zero distance means no fog
         const glm::dvec3 fc(fog.colour.r, fog.colour.g, fog.colour.b);
         // The fog's transmit is the least amount of the scene that shows through.
         const double k = std::max(std::exp(-fog_width(fog, ray, depth) / fog.distance), fog.colour.t);
-        // A filtering fog tints what it lets through instead of adding its own colour.
+        // Filter tints the light that passes; it does not change the colour the fog adds.
         const double f = fog.colour.f;
-        c.rgb = c.rgb * (k + (1 - k) * f * fc) + (1 - k) * (1 - f) * fc;
-        c.transmit *= k;
+        attenuation *= k * ((1 - f) + f * fc);
+        transmit *= k;
+        added += (1 - k) * fc;
     }
+    c.rgb = added + attenuation * c.rgb;
+    c.transmit *= transmit;
 }
 
 }  // namespace lumen::render
