@@ -107,6 +107,8 @@ Value build_block(BuildContext& ctx, const BlockValue& block) {
     if (k == "material") return make(build_material(cur), loc);
     if (k == "camera") return make(build_camera(cur), loc);
     if (k == "light_source") return make(build_light(cur), loc);
+    if (k == "object" && cur.next_is<std::shared_ptr<const scene::Light>>())
+        return make(build_light(cur), loc);  // object { LightIdent modifiers }
     if (k == "transform") return make(build_transform_block(cur), loc);
     if (k == "color_map" || k == "colour_map") return make(ColourMapValue{build_colour_map(cur)}, loc);
     if (k == "pigment_map") return make(PigmentMapValue{build_pigment_map(cur)}, loc);

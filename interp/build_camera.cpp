@@ -55,6 +55,11 @@ scene::Camera build_camera(ItemCursor& cur) {
             unsupported("camera normal", item.loc);
             continue;
         }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::Unsupported>()) {
+            cam.type = scene::CameraType::Other;  // mesh_camera { }
+            unsupported("camera '" + item.value.as<scene::Unsupported>().feature + "'", item.loc);
+            continue;
+        }
         if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, camera_keywords());
         const std::string& w = item.keyword;
         if (w == "perspective") cam.type = scene::CameraType::Perspective;
@@ -69,7 +74,11 @@ scene::Camera build_camera(ItemCursor& cur) {
         else if (w == "right") { cam.right = cur.expect_vector(w); have_right = true; }
         else if (w == "sky") sky = cur.expect_vector(w);
         else if (w == "look_at") { look_at = cur.expect_vector(w); have_look_at = true; }
-        else if (w == "angle") { angle = cur.expect_float(w); angle_loc = item.loc; }
+        else if (w == "angle") {
+            angle = cur.expect_float(w);
+            angle_loc = item.loc;
+            cur.optional_float();  // vertical angle of spherical cameras
+        }
         else if (w == "focal_point") cur.expect_vector(w);
         else if (w == "aperture") {
             if (cur.expect_float(w) > 0) unsupported("focal blur", item.loc);

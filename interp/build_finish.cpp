@@ -21,8 +21,7 @@ void read_reflection_block(BuildContext& ctx, const BlockValue& block, scene::Fi
     ItemCursor cur(ctx, block);
     std::vector<glm::dvec3> colours;
     while (!cur.at_end()) {
-        if (cur.next_is_colour_like() || cur.next_is_keyword("color") ||
-            cur.next_is_keyword("colour") || cur.next_is_keyword("rgb")) {
+        if (cur.next_is_colour_start()) {
             if (colours.size() == 2) cur.fail(cur.peek().loc, "reflection takes at most 2 colours");
             colours.push_back(cur.expect_colour("").rgb());
             continue;
@@ -73,6 +72,11 @@ scene::FinishPtr build_finish(ItemCursor& cur) {
         }
         if (const BlockValue* b = block_of(item, "irid")) {
             read_irid_block(cur.ctx(), *b, f);
+            continue;
+        }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::Unsupported>()) {
+            cur.warn(item.loc, "'" + item.value.as<scene::Unsupported>().feature +
+                                   "' in a finish is not supported: ignored");
             continue;
         }
         if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, finish_keywords());

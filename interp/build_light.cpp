@@ -50,16 +50,14 @@ scene::Light build_light(ItemCursor& cur) {
         light = *cur.next().value.as<std::shared_ptr<const scene::Light>>();
     } else {
         light.position = cur.expect_vector("");
-        if (cur.next_is_colour_like() || cur.next_is_keyword("color") ||
-            cur.next_is_keyword("colour") || cur.next_is_keyword("rgb"))
+        if (cur.next_is_colour_start())
             light.colour = cur.expect_colour("").rgb();
     }
     light.loc = cur.block_loc();
     scene::Transform transform;
-    auto area = [&](const Item& item) -> scene::AreaLight& {
-        if (!light.area) cur.fail(item.loc, "'" + item.keyword + "' needs an area_light first");
-        return *light.area;
-    };
+    // Area modifiers without an area_light are accepted and have no effect (as in POV).
+    scene::AreaLight ignored;
+    auto area = [&]() -> scene::AreaLight& { return light.area ? *light.area : ignored; };
     while (!cur.at_end()) {
         const Item& item = cur.next();
         scene::Transform t;
@@ -101,10 +99,10 @@ scene::Light build_light(ItemCursor& cur) {
         else if (w == "fade_distance") light.fade_distance = cur.expect_float(w);
         else if (w == "fade_power") light.fade_power = cur.expect_float(w);
         else if (w == "area_light") read_area_light(cur, light);
-        else if (w == "adaptive") area(item).adaptive = cur.expect_int(w);
-        else if (w == "jitter") area(item).jitter = cur.optional_bool();
-        else if (w == "circular") area(item).circular = cur.optional_bool();
-        else if (w == "orient") area(item).orient = cur.optional_bool();
+        else if (w == "adaptive") area().adaptive = cur.expect_int(w);
+        else if (w == "jitter") area().jitter = cur.optional_bool();
+        else if (w == "circular") area().circular = cur.optional_bool();
+        else if (w == "orient") area().orient = cur.optional_bool();
         else if (w == "area_illumination") light.area_illumination = cur.optional_bool();
         else if (w == "media_interaction") light.media_interaction = cur.optional_bool();
         else if (w == "media_attenuation") light.media_attenuation = cur.optional_bool();

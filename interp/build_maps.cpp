@@ -9,7 +9,7 @@ namespace {
 // Calls `entry(value, cursor, item)` for each `[v ...]` entry. A #declared map of type M
 // written inside the block is spliced in by `copy`.
 template <class M, class Out, class Entry>
-void read_entries(ItemCursor& cur, Out& out, const Entry& entry) {
+void read_entries(ItemCursor& cur, Out& out, bool optional_value, const Entry& entry) {
     while (!cur.at_end()) {
         const Item& it = cur.next();
         if (it.kind == Item::Kind::Value && it.value.is<std::shared_ptr<const M>>()) {
@@ -19,7 +19,8 @@ void read_entries(ItemCursor& cur, Out& out, const Entry& entry) {
         }
         if (it.kind != Item::Kind::MapEntry) cur.fail_unexpected(it, {});
         ItemCursor e(cur.ctx(), it.entry, cur.what() + " entry", it.loc);
-        double v = e.expect_float("");
+        // Entries of `average` maps may leave out their weight: it is then 1.
+        double v = e.next_is_float() || !optional_value ? e.expect_float("") : 1.0;
         entry(v, e, it);
         if (!e.at_end()) e.fail_unexpected(e.peek(), {});
     }
@@ -35,7 +36,7 @@ size_t count_values(const std::vector<Item>& items) {
 
 scene::ColourMap build_colour_map(ItemCursor& cur) {
     scene::ColourMap out;
-    read_entries<ColourMapValue>(cur, out, [&](double v, ItemCursor& e, const Item& it) {
+    read_entries<ColourMapValue>(cur, out, false, [&](double v, ItemCursor& e, const Item& it) {
         // The old form `[a b colour1 colour2]` is a band from a to b.
         if (e.next_is_float() && count_values(it.entry) == 4) {
             double v2 = e.expect_float("");
@@ -51,7 +52,7 @@ scene::ColourMap build_colour_map(ItemCursor& cur) {
 
 std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur) {
     std::vector<scene::Pigment::MapEntry> out;
-    read_entries<PigmentMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+    read_entries<PigmentMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_pigment(e)});
     });
     return out;
@@ -59,7 +60,7 @@ std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur) {
 
 std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur) {
     std::vector<scene::Texture::MapEntry> out;
-    read_entries<TextureMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+    read_entries<TextureMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_texture(e)});
     });
     return out;
@@ -67,7 +68,7 @@ std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur) {
 
 std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur) {
     std::vector<std::pair<double, scene::NormalPtr>> out;
-    read_entries<NormalMapValue>(cur, out, [&](double v, ItemCursor& e, const Item&) {
+    read_entries<NormalMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_normal(e)});
     });
     return out;

@@ -25,9 +25,16 @@ scene::NormalPtr build_normal(ItemCursor& cur) {
     n.loc = cur.block_loc();
     while (!cur.at_end()) {
         const Item& item = cur.next();
+        // Normal maps and list entries (`checker normal{A} normal{B}`) only matter once normal
+        // patterns are rendered; the pattern's unsupported mark records them.
         if (item.kind == Item::Kind::Value &&
-            item.value.is<std::shared_ptr<const NormalMapValue>>())
-            continue;  // recorded by the pattern's unsupported mark
+            (item.value.is<std::shared_ptr<const NormalMapValue>>() ||
+             item.value.is<scene::NormalPtr>()))
+            continue;
+        if (item.kind == Item::Kind::Value && item.value.is<double>()) {  // `bumps 0.5`
+            n.amount = item.value.as<double>();
+            continue;
+        }
         if (item.kind == Item::Kind::Keyword) {
             const std::string& w = item.keyword;
             if (w == "bump_size") { n.amount = cur.expect_float(w); continue; }
@@ -37,11 +44,7 @@ scene::NormalPtr build_normal(ItemCursor& cur) {
                 continue;
             }
         }
-        if (read_pattern_keyword(cur, item, n.pattern, "normal")) {
-            if (is_pattern_word(item))  // `bumps 0.5`: the amount follows the pattern word
-                if (auto a = cur.optional_float()) n.amount = *a;
-            continue;
-        }
+        if (read_pattern_keyword(cur, item, n.pattern, "normal")) continue;
         cur.fail_unexpected(item, normal_keywords());
     }
     return std::make_shared<scene::Normal>(std::move(n));

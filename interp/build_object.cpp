@@ -159,7 +159,19 @@ scene::ObjectPtr build_object(ItemCursor& cur) {
             cur.fail_expected("an object", "");
         }
         obj.loc = cur.block_loc();
-        read_object_modifiers(cur, obj, no_extra, kNoExtra);
+        // The copied shape's own flags may be set again: `object { Torus sturm }`.
+        auto shape_flag = [&](const Item& item) {
+            if (item.kind != Item::Kind::Keyword) return false;
+            if (item.keyword == "sturm") {
+                if (auto* t = std::get_if<scene::Torus>(&obj.shape)) t->sturm = true;
+                return true;
+            }
+            if (item.keyword != "open") return false;
+            if (auto* c = std::get_if<scene::Cylinder>(&obj.shape)) c->open = true;
+            if (auto* c = std::get_if<scene::Cone>(&obj.shape)) c->open = true;
+            return true;
+        };
+        read_object_modifiers(cur, obj, shape_flag, {"sturm", "open"});
         return std::make_shared<scene::Object>(std::move(obj));
     }
     obj.loc = cur.block_loc();

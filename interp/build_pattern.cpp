@@ -38,6 +38,7 @@ const PatternName kPatterns[] = {
     {"slope", PatternType::Other, false},        {"spiral1", PatternType::Other, false},
     {"spiral2", PatternType::Other, false},      {"tiling", PatternType::Other, false},
     {"facets", PatternType::Other, false},       {"function", PatternType::Other, false},
+    {"density_file", PatternType::Other, false},
 };
 
 const PatternName* find_pattern(const std::string& w) {
@@ -49,11 +50,17 @@ const PatternName* find_pattern(const std::string& w) {
 // Modifiers whose effect lumen does not model; their arguments are read and dropped.
 bool skip_ignored_modifier(ItemCursor& cur, const std::string& w) {
     if (w == "noise_generator" || w == "agate_turb" || w == "metric" || w == "offset" ||
-        w == "control0" || w == "control1") {
+        w == "control0" || w == "control1" || w == "accuracy" || w == "exponent" ||
+        w == "interpolate") {
         cur.expect_float(w);
         return true;
     }
-    return w == "solid" || w == "accuracy";
+    if (w == "interior" || w == "exterior") {  // fractal patterns: type, factor
+        cur.expect_float(w);
+        cur.expect_float(w);
+        return true;
+    }
+    return w == "solid";
 }
 
 }  // namespace
@@ -125,8 +132,10 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
             if (glm::length(g) == 0.0) cur.fail(kw.loc, "gradient vector is zero");
             pattern.gradient = glm::normalize(g);
         }
-        if (p->type == PatternType::Other)  // mandel 25, julia <c> 30, tiling 3 ...
-            while (cur.next_is_vector_like()) cur.next();
+        if (p->type == PatternType::Other) {  // mandel 25, julia <c> 30, density_file df3 "f"
+            cur.accept_keyword("df3");
+            while (cur.next_is_vector_like() || cur.next_is<std::string>()) cur.next();
+        }
         if (!owner.empty())
             mark_unsupported(pattern, owner + " '" + w + "'", kw.loc);
         else if (!p->supported)

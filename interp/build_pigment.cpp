@@ -5,13 +5,6 @@ namespace lumen::interp {
 
 namespace {
 
-bool next_is_colour_start(ItemCursor& cur) {
-    return cur.next_is_colour_like() || cur.next_is_keyword("color") ||
-           cur.next_is_keyword("colour") || cur.next_is_keyword("rgb") ||
-           cur.next_is_keyword("rgbf") || cur.next_is_keyword("rgbt") ||
-           cur.next_is_keyword("rgbft");
-}
-
 const std::vector<std::string>& pigment_keywords() {
     static const std::vector<std::string> k = [] {
         std::vector<std::string> v = pattern_keywords();
@@ -32,7 +25,7 @@ void read_list_form(ItemCursor& cur, scene::Pigment& p) {
         if (cur.next_is<scene::PigmentPtr>()) {
             pigments.push_back(cur.next().value.as<scene::PigmentPtr>());
             all_colours = false;
-        } else if (next_is_colour_start(cur)) {
+        } else if (cur.next_is_colour_start()) {
             SourceLoc loc = cur.peek().loc;
             pigments.push_back(solid_pigment(cur.expect_colour(""), loc));
         } else {
@@ -64,7 +57,7 @@ scene::PigmentPtr build_pigment(ItemCursor& cur) {
     else if (cur.ctx().default_pigment) p = *cur.ctx().default_pigment;
     p.loc = cur.block_loc();
     while (!cur.at_end()) {
-        if (next_is_colour_start(cur)) {
+        if (cur.next_is_colour_start()) {
             p.pattern.type = scene::PatternType::Plain;
             p.colour = cur.expect_colour("");
             continue;

@@ -118,6 +118,13 @@ bool ItemCursor::next_is_vector_like() { return next_is<double>() || next_is<Vec
 
 bool ItemCursor::next_is_colour_like() { return next_is_vector_like() || next_is<scene::Colour>(); }
 
+bool ItemCursor::next_is_colour_start() {
+    if (next_is_colour_like()) return true;
+    if (!next_is_keyword()) return false;
+    const std::string& w = peek().keyword;
+    return w == "color" || w == "colour" || is_component_keyword(w);
+}
+
 bool ItemCursor::accept_keyword(std::string_view word) {
     if (!next_is_keyword(word)) return false;
     next();

@@ -39,6 +39,8 @@ public:
     bool next_is_float();
     bool next_is_vector_like();  // float or vector
     bool next_is_colour_like();  // float, vector or colour
+    // A colour value, or a colour keyword (`color`, `rgb`, `red`, ...) that starts one.
+    bool next_is_colour_start();
     template <class T> bool next_is() {
         return !at_end() && peek().kind == Item::Kind::Value && peek().value.is<T>();
     }

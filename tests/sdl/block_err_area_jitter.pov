@@ -1,1 +1,0 @@
-light_source { <0, 5, 0>, 1 jitter }
