@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -54,7 +55,14 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
     if (options.width <= 0 || options.height <= 0)
         throw LumenError({}, "image size must be positive");
 
-    const Geometry geometry(scene);
+    // A light's looks_like object is part of the geometry (already placed and no_shadow).
+    std::optional<scene::Scene> with_looks_like;
+    for (const scene::Light& l : scene.lights) {
+        if (!l.looks_like) continue;
+        if (!with_looks_like) with_looks_like = scene;
+        with_looks_like->objects.push_back(l.looks_like);
+    }
+    const Geometry geometry(with_looks_like ? *with_looks_like : scene);
     const GeometryIntersector intersector(geometry);
     TraceOptions trace_options;
     trace_options.quality = options.quality;
