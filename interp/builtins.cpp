@@ -132,8 +132,8 @@ Builtin binary(double (*f)(double, double)) {
 template <class Op>
 Builtin bitwise(Op op) {
     return {2, -1, false, [op](Evaluator&, const ast::Node& c, Args& a) {
-                long long acc = static_cast<long long>(to_float(a[0]));
-                for (size_t i = 1; i < a.size(); ++i) acc = op(acc, static_cast<long long>(to_float(a[i])));
+                long long acc = to_integer(a[0]);
+                for (size_t i = 1; i < a.size(); ++i) acc = op(acc, to_integer(a[i]));
                 return Value{static_cast<double>(acc), c.loc};
             }};
 }
@@ -153,9 +153,8 @@ Value Evaluator::call_builtin(const ast::Node& call) {
         if (call.text == u) throw LumenError(call.loc, std::string("'") + u + "' is not supported");
     auto it = builtin_table().find(call.text);
     if (it == builtin_table().end()) {
-        std::vector<std::string> names = symbols.visible_names();
-        for (const auto& [name, b] : builtin_table()) names.push_back(name);
-        throw LumenError(call.loc, "undeclared identifier '" + call.text + "'", did_you_mean(call.text, names));
+        throw LumenError(call.loc, "undeclared identifier '" + call.text + "'",
+                         did_you_mean(call.text, suggestion_words()));
     }
     const Builtin& b = it->second;
     int n = static_cast<int>(call.children.size());
@@ -173,8 +172,8 @@ Value Evaluator::call_builtin(const ast::Node& call) {
 
 // Random streams: seed(n) starts a stream and returns its number; rand(stream) steps a
 // 32-bit linear congruential generator. This matches POV-Ray 3.7's sequence.
-double Evaluator::new_rand_stream(double seed) {
-    rand_streams_.push_back(static_cast<uint32_t>(static_cast<long long>(seed)));
+double Evaluator::new_rand_stream(const Value& seed) {
+    rand_streams_.push_back(static_cast<uint32_t>(to_integer(seed)));
     return static_cast<double>(rand_streams_.size() - 1);
 }
 
@@ -271,7 +270,7 @@ const std::unordered_map<std::string, Builtin>& builtin_table() {
                            return ev.eval(*c.children[pick]);
                        }};
         t["seed"] = {1, 1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
-                         return Value{ev.new_rand_stream(to_float(a[0])), c.loc};
+                         return Value{ev.new_rand_stream(a[0]), c.loc};
                      }};
         t["rand"] = {1, 1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
                          return Value{ev.next_rand(a[0]), c.loc};

@@ -32,6 +32,18 @@ int to_int(const Value& v) {
     return static_cast<int>(d);
 }
 
+long long to_integer(const Value& v) {
+    double d = to_float(v);
+    if (!std::isfinite(d) || std::fabs(d) > 9e18) throw LumenError(v.loc, "integer value out of range");
+    return static_cast<long long>(d);
+}
+
+std::string number_text(double f) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", f);
+    return buf;
+}
+
 std::vector<double> components(const Value& v) {
     if (v.is<double>()) return {v.as<double>()};
     if (v.is<VecN>()) return v.as<VecN>().c;

@@ -21,6 +21,8 @@ glm::dvec3 to_vec3(const Value& v);
 scene::Colour to_colour(const Value& v);
 const std::string& to_string_value(const Value& v);
 int to_int(const Value& v);  // truncates toward zero, like POV's int()
+long long to_integer(const Value& v);  // same, for the 64-bit range (bitwise functions, seeds)
+std::string number_text(double f);     // "3", "-1", "2.5", "1e+30" for messages
 
 // The numeric components of a float/vector/colour (1, n or 5 of them).
 std::vector<double> components(const Value& v);

@@ -151,5 +151,14 @@ TEST_F(BuiltinTest, ArgumentErrors) {
     EXPECT_EQ(expr_error("sqr(2)"), "expr:1:1: error: undeclared identifier 'sqr'");
 }
 
+TEST_F(BuiltinTest, MisspeltFunctionGetsAHint) {
+    try {
+        value("vnormalise(x)");
+        FAIL() << "expected an error";
+    } catch (const LumenError& e) {
+        EXPECT_EQ(e.diag.hint, "did you mean 'vnormalize'?");
+    }
+}
+
 }  // namespace
 }  // namespace lumen::interp::testing

@@ -71,6 +71,8 @@ public:
     double eval_float(const ast::Node& expr);
     bool eval_condition(const ast::Node& expr);
     Value lookup(const ast::Node& ident);  // identifier or built-in constant
+    // Declared names and reserved words, for "did you mean" hints.
+    std::vector<std::string> suggestion_words() const;
     // The array element an Index node names (bounds checked; may be uninitialised).
     struct ArraySlot {
         std::shared_ptr<ArrayValue> array;
@@ -82,7 +84,7 @@ public:
     std::optional<Value> builtin_constant(const std::string& name, SourceLoc loc) const;
     static bool is_builtin_function(const std::string& name);
     Value call_builtin(const ast::Node& call);
-    double new_rand_stream(double seed);          // seed()
+    double new_rand_stream(const Value& seed);          // seed()
     double next_rand(const Value& stream);        // rand()
     Value fold_range(const ast::Node& call, bool product);  // sum() / prod()
     bool is_defined(const ast::Node& target);    // #ifdef, defined(): Ident or Index

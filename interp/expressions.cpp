@@ -3,6 +3,7 @@
 
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
+#include "parser/keywords.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
@@ -166,10 +167,15 @@ Value Evaluator::lookup(const ast::Node& ident) {
         return copy;
     }
     if (auto c = builtin_constant(ident.text, ident.loc)) return *c;
+    throw LumenError(ident.loc, "undeclared identifier '" + ident.text + "'",
+                     did_you_mean(ident.text, suggestion_words()));
+}
+
+std::vector<std::string> Evaluator::suggestion_words() const {
     std::vector<std::string> names = symbols.visible_names();
-    const auto& kws = known_block_keywords();
-    names.insert(names.end(), kws.begin(), kws.end());
-    throw LumenError(ident.loc, "undeclared identifier '" + ident.text + "'", did_you_mean(ident.text, names));
+    const auto& reserved = parser::reserved_words();
+    names.insert(names.end(), reserved.begin(), reserved.end());
+    return names;
 }
 
 Value Evaluator::member(const ast::Node& e) {
@@ -203,11 +209,10 @@ Evaluator::ArraySlot Evaluator::array_slot(const ast::Node& e) {
     for (size_t d = 0; d < given; ++d) {
         const ast::Node& ix = *e.children[d + 1];
         double f = eval_float(ix);
-        long long i = static_cast<long long>(std::trunc(f));
-        if (!(f > -1.0) || i >= static_cast<long long>(a.dims[d]))
-            throw LumenError(ix.loc, "array index " + std::to_string(std::isfinite(f) ? (long long)f : -1) +
-                                         " is out of range 0.." + std::to_string(a.dims[d] - 1));
-        slot.index = slot.index * a.dims[d] + static_cast<size_t>(i);
+        if (!(f > -1.0 && std::trunc(f) < static_cast<double>(a.dims[d])))
+            throw LumenError(ix.loc, "array index " + number_text(std::trunc(f)) + " is out of range 0.." +
+                                         std::to_string(a.dims[d] - 1));
+        slot.index = slot.index * a.dims[d] + static_cast<size_t>(f);
     }
     return slot;
 }
@@ -221,7 +226,7 @@ Value Evaluator::array_decl(const ast::Node& e) {
     for (size_t d = 0; d < ndims; ++d) {
         double f = eval_float(*e.children[d]);
         if (!(f >= 1.0) || f * double(total) > double(kMaxElements))
-            throw LumenError(e.children[d]->loc, "invalid array size " + std::to_string((long long)f));
+            throw LumenError(e.children[d]->loc, "invalid array size " + number_text(f));
         arr->dims.push_back(static_cast<size_t>(f));
         total *= arr->dims.back();
     }
