@@ -63,6 +63,12 @@ TEST_F(IncludeTest, SystemIncludeFolderIsUsedByDefault) {
     EXPECT_DOUBLE_EQ(number("file_exists(\"math.inc\")"), 0);
 }
 
+TEST_F(IncludeTest, IncExtensionIsOptional) {
+    write("shapes_x.inc", "#declare Got = 1;\n");
+    run_main_file("#include \"shapes_x\"\n");
+    EXPECT_DOUBLE_EQ(num_var("Got"), 1);
+}
+
 TEST_F(IncludeTest, MissingIncludeIsAnErrorAtTheName) {
     Diagnostic d;
     EXPECT_EQ(error_in_main("\n#include \"nothere.inc\"\n", &d), "cannot find include file 'nothere.inc'");

@@ -17,13 +17,20 @@ std::string Evaluator::find_include(const std::string& name) const {
         return fs::is_regular_file(p, ec);
     };
     fs::path p(name);
-    if (p.is_absolute()) return usable(p) ? name : std::string();
+    if (p.is_absolute()) {
+        if (usable(p)) return name;
+        return !p.has_extension() && usable(name + ".inc") ? name + ".inc" : std::string();
+    }
     std::vector<fs::path> dirs{fs::path(scene_dir_)};
     for (const std::string& d : options_.library_paths) dirs.emplace_back(d);
     if (options_.default_include_path && !options_.system_include_dir.empty())
         dirs.emplace_back(options_.system_include_dir);
+    // POV-Ray also tries the name with ".inc" added (`#include "colors"`).
+    std::vector<fs::path> names{p};
+    if (!p.has_extension()) names.emplace_back(name + ".inc");
     for (const fs::path& d : dirs)
-        if (usable(d / p)) return (d / p).lexically_normal().string();
+        for (const fs::path& n : names)
+            if (usable(d / n)) return (d / n).lexically_normal().string();
     return {};
 }
 
