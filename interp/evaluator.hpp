@@ -2,7 +2,8 @@
 // block bodies into items (see value.hpp for the model). One Evaluator interprets one scene.
 //
 // The work is split by concept: flatten.cpp (items and blocks), expressions.cpp, builtins.cpp,
-// directives.cpp, macros.cpp, includes.cpp. Recursion follows the syntax tree, whose nesting
+// directives.cpp, macros.cpp, user_functions.cpp, includes.cpp; scope.hpp holds the symbol
+// tables and conversions.hpp the promotion rules. Recursion follows the syntax tree, whose nesting
 // the parser bounds, plus macro calls and includes, which have their own depth limits.
 #pragma once
 #include <functional>
