@@ -124,7 +124,7 @@ TEST_F(BuildLight, Errors) {
     EXPECT_EQ(error_of("light_source { 0, 1 jitter }"),
               "no error");
     EXPECT_EQ(error_of("light_source { 0, 1 area_light x, y, 0, 1 }"),
-              "t.pov:1:41: error: area_light sizes must be at least 1");
+              "t.pov:1:21: error: area_light sizes must be at least 1");
 }
 
 }  // namespace

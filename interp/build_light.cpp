@@ -31,13 +31,13 @@ scene::ObjectPtr single_object(ItemCursor& cur, const BlockValue& block) {
     return obj;
 }
 
-void read_area_light(ItemCursor& cur, scene::Light& light) {
+void read_area_light(ItemCursor& cur, SourceLoc loc, scene::Light& light) {
     scene::AreaLight a = light.area.value_or(scene::AreaLight{});
     a.axis1 = cur.expect_vector("area_light");
     a.axis2 = cur.expect_vector("area_light");
     a.size1 = cur.expect_int("area_light");
     a.size2 = cur.expect_int("area_light");
-    if (a.size1 < 1 || a.size2 < 1) cur.fail(cur.here(), "area_light sizes must be at least 1");
+    if (a.size1 < 1 || a.size2 < 1) cur.fail(loc, "area_light sizes must be at least 1");
     light.area = a;
 }
 
@@ -98,7 +98,7 @@ scene::Light build_light(ItemCursor& cur) {
         else if (w == "shadowless") light.shadowless = cur.optional_bool();
         else if (w == "fade_distance") light.fade_distance = cur.expect_float(w);
         else if (w == "fade_power") light.fade_power = cur.expect_float(w);
-        else if (w == "area_light") read_area_light(cur, light);
+        else if (w == "area_light") read_area_light(cur, item.loc, light);
         else if (w == "adaptive") area().adaptive = cur.expect_int(w);
         else if (w == "jitter") area().jitter = cur.optional_bool();
         else if (w == "circular") area().circular = cur.optional_bool();

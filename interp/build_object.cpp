@@ -184,6 +184,14 @@ scene::ObjectPtr build_object(ItemCursor& cur) {
     } else if (kw == "torus") {
         read_object_modifiers(cur, obj, flag_keyword("sturm", sturm), {"sturm"});
         std::get<scene::Torus>(obj.shape).sturm = sturm;
+    } else if (kw == "triangle" || kw == "smooth_triangle") {
+        // Mesh triangles may carry `uv_vectors <u,v> <u,v> <u,v>`: only uv_mapping uses them.
+        auto uv = [&](const Item& item) {
+            if (item.kind != Item::Kind::Keyword || item.keyword != "uv_vectors") return false;
+            for (int i = 0; i < 3; ++i) cur.expect_vecn("uv_vectors");
+            return true;
+        };
+        read_object_modifiers(cur, obj, uv, {"uv_vectors"});
     } else {
         read_object_modifiers(cur, obj, no_extra, kNoExtra);
     }

@@ -51,7 +51,7 @@ const PatternName* find_pattern(const std::string& w) {
 bool skip_ignored_modifier(ItemCursor& cur, const std::string& w) {
     if (w == "noise_generator" || w == "agate_turb" || w == "metric" || w == "offset" ||
         w == "control0" || w == "control1" || w == "accuracy" || w == "exponent" ||
-        w == "interpolate") {
+        w == "interpolate" || w == "coords" || w == "size") {
         cur.expect_float(w);
         return true;
     }
