@@ -37,7 +37,10 @@ public:
     void close(Finisher finish, const char* end);
     void discard() { frames_.pop_back(); }
     std::size_t mark() const { return frames_.back().node->children.size(); }
-    void truncate(std::size_t mark) { frames_.back().node->children.resize(mark); }
+    void truncate(std::size_t mark) {
+        auto& kids = frames_.back().node->children;
+        if (kids.size() != mark) kids.resize(mark);
+    }
     // Moves the children appended since `mark` into a new node and appends its finished form.
     void wrap(ast::Kind kind, const InputIterator& at, std::size_t mark, Finisher finish,
               const char* end);
