@@ -193,3 +193,40 @@ TEST_F(BuildMaterial, Errors) {
 
 }  // namespace
 }  // namespace lumen::interp::testing
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildMaterialForms = BuildTest;
+
+TEST_F(BuildMaterialForms, ColourComponentKeywordsInPigment) {
+    scene::Texture t = texture_of("sphere { 0, 1 pigment { red 0.75 green 0.5 blue 0.25 filter 0.1 } }");
+    EXPECT_EQ(t.pigment->colour, (scene::Colour{0.75, 0.5, 0.25, 0.1, 0}));
+}
+
+TEST_F(BuildMaterialForms, AverageMapEntriesMayOmitTheirWeight) {
+    scene::Texture t = texture_of(
+        "sphere { 0, 1 pigment { average pigment_map { [gradient x] [2 checker] } } }");
+    ASSERT_EQ(t.pigment->pigment_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(t.pigment->pigment_map[0].value, 1);
+    EXPECT_DOUBLE_EQ(t.pigment->pigment_map[1].value, 2);
+    ASSERT_TRUE(t.pigment->pattern.unsupported.has_value());
+    EXPECT_EQ(t.pigment->pattern.unsupported->feature, "pattern 'average'");
+}
+
+TEST_F(BuildMaterialForms, WarpAndUvMappingMarkThePattern) {
+    scene::Texture t = texture_of("sphere { 0, 1 pigment { checker warp { repeat x } } }");
+    EXPECT_EQ(t.pigment->pattern.unsupported->feature, "warp");
+    scene::Texture u = texture_of("sphere { 0, 1 texture { uv_mapping pigment { checker } } }");
+    EXPECT_EQ(u.pattern.unsupported->feature, "uv_mapping");
+}
+
+TEST_F(BuildMaterialForms, ObjectOfADeclaredLightIsALight) {
+    scene::Scene s = run("#declare L = light_source { 0, 1 }\nobject { L translate y }");
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_TRUE(s.objects.empty());
+    expect_vec(s.lights[0].position, {0, 1, 0});
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing
