@@ -21,7 +21,7 @@ void read_radiosity(BuildContext& ctx, const BlockValue& block, scene::Radiosity
         const std::string& w = item.keyword;
         if (w == "count") {
             r.count = cur.expect_int(w);
-            if (auto pool = cur.optional_float()) r.count_pool = int(*pool);
+            if (cur.next_is_float()) r.count_pool = cur.expect_int(w);
         } else if (w == "error_bound") r.error_bound = cur.expect_float(w);
         else if (w == "recursion_limit") r.recursion_limit = cur.expect_int(w);
         else if (w == "nearest_count") {

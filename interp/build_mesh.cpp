@@ -28,8 +28,8 @@ std::array<int, 3> index_triple(ItemCursor& cur) {
     glm::dvec3 v = cur.expect_vector("");
     std::array<int, 3> out{};
     for (int i = 0; i < 3; ++i) {
+        if (!(v[i] >= 0 && v[i] < 2147483647.0)) cur.fail(loc, "bad index in " + cur.what());
         out[i] = static_cast<int>(v[i]);
-        if (out[i] < 0) cur.fail(loc, "negative index in " + cur.what());
     }
     return out;
 }
@@ -116,10 +116,10 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
                 scene::Mesh::Face f;
                 face_locs.push_back(c.next_is_vector_like() ? c.peek().loc : c.here());
                 f.v = index_triple(c);
-                if (auto t0 = c.optional_float()) {  // one texture, or one per vertex
-                    f.tex.fill(int(*t0));
-                    if (auto t1 = c.optional_float()) {
-                        f.tex[1] = int(*t1);
+                if (c.next_is_float()) {  // one texture, or one per vertex
+                    f.tex.fill(c.expect_int(""));
+                    if (c.next_is_float()) {
+                        f.tex[1] = c.expect_int("");
                         f.tex[2] = c.expect_int("");
                     }
                 }

@@ -162,7 +162,9 @@ double ItemCursor::expect_float(std::string_view after) {
 
 int ItemCursor::expect_int(std::string_view after) {
     // POV truncates floats used as integers.
-    return static_cast<int>(std::trunc(expect_float(after)));
+    double v = std::trunc(expect_float(after));
+    if (!(std::abs(v) < 2147483647.0)) fail(here(), "integer out of range");
+    return static_cast<int>(v);
 }
 
 std::vector<double> ItemCursor::expect_vecn(std::string_view after) {
