@@ -1,8 +1,6 @@
 // The list of interiors a ray is inside (povray-semantics.md §5.1), in a fixed array so that
 // spawning rays never allocates.
 #pragma once
-#include <array>
-
 #include "scene/texture.hpp"
 
 namespace lumen::render {
@@ -11,9 +9,20 @@ class InteriorList {
 public:
     static constexpr int kCapacity = 24;
     struct Entry {
-        const void* id = nullptr;
-        const scene::Interior* interior = nullptr;
+        const void* id;
+        const scene::Interior* interior;
     };
+
+    InteriorList() = default;
+    // Copies only the used entries: lists are copied for every secondary and shadow ray.
+    InteriorList(const InteriorList& o) : size_(o.size_) {
+        for (int i = 0; i < size_; ++i) entries_[i] = o.entries_[i];
+    }
+    InteriorList& operator=(const InteriorList& o) {
+        size_ = o.size_;
+        for (int i = 0; i < size_; ++i) entries_[i] = o.entries_[i];
+        return *this;
+    }
 
     bool empty() const { return size_ == 0; }
     int size() const { return size_; }
@@ -43,8 +52,8 @@ public:
     }
 
 private:
-    std::array<Entry, kCapacity> entries_{};
     int size_ = 0;
+    Entry entries_[kCapacity];  // only [0, size_) is meaningful
 };
 
 }  // namespace lumen::render

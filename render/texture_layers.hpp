@@ -10,10 +10,11 @@
 namespace lumen::render {
 
 // One plain layer at a point: pigment colour, finish and normal.
+// (No default member initialisers: arrays of layers live on the stack of every shaded hit.)
 struct ResolvedLayer {
     scene::Colour colour;
-    const scene::Finish* finish = nullptr;  // never null after resolve
-    const scene::Normal* normal = nullptr;  // null: no perturbation
+    const scene::Finish* finish;  // never null after resolve
+    const scene::Normal* normal;  // null: no perturbation
 };
 
 const scene::Finish& default_finish();
@@ -27,8 +28,8 @@ ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p);
 // or empty texture is the default one (black, default finish).
 struct ResolvedLayers {
     static constexpr int kMax = 16;
-    std::array<ResolvedLayer, kMax> layer;
     int count = 0;
+    ResolvedLayer layer[kMax];  // only [0, count) is filled
 };
 void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out);
 

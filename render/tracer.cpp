@@ -62,7 +62,7 @@ bool is_texture_map(const scene::LayeredTexture* t) {
 struct Tracer::Context {
     int level = 0;
     double weight = 1;
-    InteriorList interiors;
+    const InteriorList* interiors = nullptr;  // the interiors the ray travels in
     RayKind kind = RayKind::Image;
     bool continued = false;  // passes through an ior-1 surface without using a trace level
 };
@@ -86,7 +86,9 @@ Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const Tra
 }
 
 RayColour Tracer::trace_primary(const Ray& ray, ThreadState& state) const {
+    InteriorList outside;
     Context ctx;
+    ctx.interiors = &outside;
     double depth = 0;
     return trace(ray, ctx, state, &depth);
 }
@@ -122,7 +124,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
-    apply_fog(c, ray, *depth, ctx.interiors);
+    apply_fog(c, ray, *depth, *ctx.interiors);
     return c;
 }
 
@@ -167,7 +169,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     // Relative IOR across this surface, only needed by fresnel reflection.
     InteriorList beyond;
-    const double eta = cross_surface(ctx.interiors, hit, beyond);
+    const double eta = cross_surface(*ctx.interiors, hit, beyond);
 
     struct PendingReflection {
         glm::dvec3 colour, normal;
@@ -192,7 +194,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
         s.double_illuminate = double_illuminate;
-        out.rgb += filter * local_light(s, env_, ctx.interiors, state);
+        out.rgb += filter * local_light(s, env_, *ctx.interiors, state);
 
         if (quality >= 8) {
             const Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);
@@ -220,7 +222,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         glm::dvec3 fade(1);
         const double refraction_eta = quality >= 6 ? eta : 1.0;
         if (refraction_eta == 1.0) {
-            child.interiors = beyond;
+            child.interiors = &beyond;
             child.continued = true;
             t = trace(Ray{hit.point, d}, child, state, &child_depth);
         } else {
@@ -240,7 +242,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
                 t = trace(Ray{hit.point, reflect_direction(d, nl, raw_n)}, child, state,
                           &child_depth);
             } else {
-                child.interiors = beyond;
+                child.interiors = &beyond;
                 const glm::dvec3 dir =
                     glm::normalize(refraction_eta * d + (refraction_eta * n - std::sqrt(k)) * ln);
                 t = trace(Ray{hit.point, dir}, child, state, &child_depth);
@@ -248,7 +250,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         }
         // Fade: the incoming ray crossed this object's interior for hit.t (only the light
         // passing through is faded, not the surface's own colour).
-        if (hit.interior && ctx.interiors.find(hit.interior_id) >= 0)
+        if (hit.interior && ctx.interiors->find(hit.interior_id) >= 0)
             fade = interior_fade(*hit.interior, hit.t, false);
         out.rgb += total_internal ? fade * t.rgb : fade * t.rgb * f;
         out.transmit = grey(fade) * t.transmit * trans;
