@@ -1,0 +1,43 @@
+// The dense form factor matrix F (row i: fractions of the energy leaving i that reach each j)
+// and the builders for it: analytic (unoccluded), ray-cast (occluded) and hemicube.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "render/radiosity/form_factor.hpp"
+#include "render/radiosity/patch.hpp"
+
+namespace lumen::render::radiosity {
+
+struct FormFactorMatrix {
+    size_t n = 0;
+    std::vector<double> f;  // row-major n x n
+
+    FormFactorMatrix() = default;
+    explicit FormFactorMatrix(size_t size) : n(size), f(size * size, 0.0) {}
+    double& operator()(size_t i, size_t j) { return f[i * n + j]; }
+    double operator()(size_t i, size_t j) const { return f[i * n + j]; }
+    double row_sum(size_t i) const;
+};
+
+// Lambert area averages for every pair facing each other (no occlusion test: convex
+// enclosures and unoccluded scenes only).
+FormFactorMatrix analytic_matrix(const std::vector<Patch>& patches,
+                                 const QuadratureOptions& q = {});
+
+// Gathered ray-cast rows (patches occlude each other); `symmetrise` replaces each pair by
+// the reciprocity-consistent average F_ij = (A_i F_ij + A_j F_ji) / (2 A_i).
+FormFactorMatrix ray_cast_matrix(const std::vector<Patch>& patches, int rays_per_patch,
+                                 uint64_t seed, bool symmetrise = true);
+
+// Hemicube rows at the patch centroids.
+FormFactorMatrix hemicube_matrix(const std::vector<Patch>& patches, int resolution);
+
+// Makes A_i F_ij = A_j F_ji hold exactly by averaging the two estimates.
+void symmetrise(FormFactorMatrix& F, const std::vector<Patch>& patches);
+
+// The form factor matrix of the inside of a sphere: F_ij = A_j / A_total (exact for any
+// patching of a true sphere, notes §2.1 (e)); useful for furnace tests.
+FormFactorMatrix sphere_interior_matrix(const std::vector<Patch>& patches);
+
+}  // namespace lumen::render::radiosity
