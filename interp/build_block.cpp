@@ -20,7 +20,8 @@ const std::vector<std::string> kBuilt = {
 const std::vector<std::string> kData = {
     "reflection", "irid", "radiosity", "vertex_vectors", "normal_vectors", "uv_vectors",
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
-    "looks_like", "projected_through", "global_settings", "background", "interior_texture"};
+    "looks_like", "projected_through", "global_settings", "background", "interior_texture",
+    "default"};  // `default { }`: the old spelling of #default
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported).
 const std::vector<std::string> kUnsupported = {
     "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal", "lathe",
@@ -144,6 +145,8 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
     } else if (const BlockValue* b = block_of(item, "global_settings")) {
         ItemCursor cur(ctx, *b);
         apply_global_settings(cur, scene.globals);
+    } else if (const BlockValue* b = block_of(item, "default")) {
+        apply_default(ctx, *b);
     } else if (const BlockValue* b = block_of(item, "background")) {
         ItemCursor cur(ctx, *b);
         scene.background = build_background(cur);

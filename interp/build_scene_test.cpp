@@ -109,3 +109,17 @@ TEST_F(BuildScene, DumpIsDeterministic) {
 
 }  // namespace
 }  // namespace lumen::interp::testing
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildSceneOld = BuildTest;
+
+TEST_F(BuildSceneOld, DefaultBlockWithoutHashActsLikeHashDefault) {
+    scene::Texture t = texture_of("default { finish { ambient 0.4 } }\nsphere { 0, 1 pigment { rgb 1 } }");
+    ASSERT_TRUE(t.finish);
+    expect_vec(t.finish->ambient, {0.4, 0.4, 0.4});
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing
