@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -38,6 +40,9 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
         filter *= surface_filter(hit.texture, hit.point);
         if (is_black(filter)) return glm::dvec3(0);
+        // Fake caustics brighten light passing a transparent surface head-on.
+        if (hit.interior && hit.interior->caustics != 0)
+            filter *= 1 + std::pow(std::fabs(glm::dot(hit.normal, dir)), 45 * hit.interior->caustics);
         const int where = inside.find(hit.interior_id);
         if (where >= 0 && hit.interior) filter *= interior_fade(*hit.interior, hit.t, true);
         inside.toggle(hit.interior_id, hit.interior);

@@ -203,6 +203,18 @@ TEST(Tracer, MaxTraceLevelBetweenFacingMirrors) {
     EXPECT_EQ(ten.at(4, 3, 1), 187);
 }
 
+TEST(Tracer, FakeCausticsBrightenShadows) {
+    scene::Scene s = stage();
+    s.lights.push_back(point_light({-2, 6, -3}, {1, 1, 1}));
+    s.objects.push_back(plane({0, 1, 0}, -1, {rgb(0.9, 0.9, 0.9)}));
+    Material glass{{1, 1, 1, 0.9, 0}};
+    glass.interior = scene::Interior{};
+    glass.interior->ior = 1.5;
+    glass.interior->caustics = 1.0;
+    s.objects.push_back(sphere({0, 0, 0}, 0.9, glass));
+    expect_matches(s, "caustics.ppm", 1);
+}
+
 scene::Scene fog_stage() {
     scene::Scene s = stage();
     s.lights.push_back(point_light({-4, 6, -5}, {1, 1, 1}));
