@@ -29,7 +29,7 @@ const std::vector<std::string> kUnsupported = {
     "quartic", "sor", "sphere_sweep", "superellipsoid", "text", "media", "photons",
     "subsurface", "warp", "image_map", "bump_map", "material_map", "image_pattern",
     "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
-    "function", "rainbow"};
+    "function", "rainbow", "tiles", "mesh_camera"};
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();
@@ -204,7 +204,6 @@ void finish_scene(BuildContext& ctx, scene::Scene& scene) {
                           [&](const auto& a, const auto& b) { return key(a) == key(b); }),
               out.end());
     scene.unsupported = std::move(out);
-    (void)ctx;
 }
 
 }  // namespace lumen::interp
