@@ -88,6 +88,8 @@ scene::Camera build_camera(ItemCursor& cur) {
         } else if (w == "confidence" || w == "variance") cur.expect_float(w);
         else cur.fail_unexpected(item, camera_keywords());
     }
+    if (!(glm::length(cam.direction) > 0))
+        cur.fail(cam.loc, "camera direction is a zero vector");
     // Step 2: angle is the full horizontal field of view along `right`.
     if (angle && cam.type != scene::CameraType::Other) {
         if (!(*angle > 0 && *angle < 180))

@@ -129,3 +129,18 @@ TEST_F(BuildLight, Errors) {
 
 }  // namespace
 }  // namespace lumen::interp::testing
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildCameraErrors = BuildTest;
+
+TEST_F(BuildCameraErrors, DegenerateVectorsAreErrors) {
+    EXPECT_EQ(error_of("camera { direction 0 }"),
+              "t.pov:1:1: error: camera direction is a zero vector");
+    EXPECT_EQ(error_of("camera { location y look_at y }"),
+              "t.pov:1:1: error: camera look_at equals its location");
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing
