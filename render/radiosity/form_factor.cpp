@@ -40,6 +40,14 @@ double point_to_polygon(const glm::dvec3& x, const glm::dvec3& n, const Patch& t
     const auto poly = clip_to_front(target.vertices, x, n);
     const size_t m = poly.size();
     if (m < 3) return 0;
+    // A target in x's own tangent plane is seen edge-on (coplanar neighbours, z-fighting
+    // copies, the patch itself): without this the contour sum of a point inside it is 2π.
+    double height = 0, extent = 0;
+    for (const auto& v : poly) {
+        height = std::max(height, glm::dot(n, v - x));
+        extent = std::max(extent, glm::length(v - x));
+    }
+    if (!(height > 1e-12 * extent)) return 0;
     double sum = 0;
     for (size_t i = 0; i < m; ++i) {
         const glm::dvec3 a = poly[i] - x, b = poly[(i + 1) % m] - x;

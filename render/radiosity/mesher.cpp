@@ -111,7 +111,7 @@ void mesh_box(const scene::Box& box, Builder& b) {
 }
 
 void mesh_sphere(const scene::Sphere& s, Builder& b) {
-    const int lat = std::max(4, b.segments(std::numbers::pi * s.radius, true) / 2);
+    const int lat = std::max(4, b.segments(std::numbers::pi * s.radius));
     const int lon = std::max(2 * lat, b.segments(two_pi * s.radius, true));
     b.grid([&](double u, double v) {
         const double theta = -std::numbers::pi / 2 + std::numbers::pi * u, phi = two_pi * v;
