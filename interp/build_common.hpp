@@ -51,6 +51,9 @@ std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cu
 scene::PigmentPtr build_pigment(ItemCursor& cur);
 scene::PigmentPtr solid_pigment(const scene::Colour& c, SourceLoc loc);
 scene::FinishPtr build_finish(ItemCursor& cur);
+// `finish { ... }` written where a finish already is (a copied texture, an object's texture):
+// the fields the block wrote replace those of `base`; a declared finish replaces it whole.
+scene::FinishPtr apply_finish(const scene::FinishPtr& base, const scene::FinishPtr& f);
 scene::NormalPtr build_normal(ItemCursor& cur);
 scene::LayeredTexture build_texture(ItemCursor& cur);
 scene::Interior build_interior(ItemCursor& cur);

@@ -230,3 +230,31 @@ TEST_F(BuildMaterialForms, ObjectOfADeclaredLightIsALight) {
 
 }  // namespace
 }  // namespace lumen::interp::testing
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildFinishLayering = BuildTest;
+
+TEST_F(BuildFinishLayering, FinishBlockModifiesTheFinishInPlace) {
+    const char* decl = "#declare T = texture { pigment { rgb 1 } finish { ambient 0.3 phong 1 } }\n";
+    scene::Texture t = texture_of(std::string(decl) + "sphere { 0, 1 texture { T finish { specular 0.5 } } }");
+    expect_vec(t.finish->ambient, {0.3, 0.3, 0.3});  // kept from T
+    EXPECT_DOUBLE_EQ(t.finish->phong, 1);
+    EXPECT_DOUBLE_EQ(t.finish->specular, 0.5);
+    scene::Texture o = texture_of(std::string(decl) + "sphere { 0, 1 texture { T } finish { phong 0.2 } }");
+    expect_vec(o.finish->ambient, {0.3, 0.3, 0.3});
+    EXPECT_DOUBLE_EQ(o.finish->phong, 0.2);
+}
+
+TEST_F(BuildFinishLayering, DeclaredFinishReplacesWhole) {
+    scene::Texture t = texture_of(
+        "#declare F = finish { specular 0.5 }\n"
+        "#declare T = texture { pigment { rgb 1 } finish { ambient 0.3 } }\n"
+        "sphere { 0, 1 texture { T finish { F } } }");
+    expect_vec(t.finish->ambient, {0.1, 0.1, 0.1});
+    EXPECT_DOUBLE_EQ(t.finish->specular, 0.5);
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing

@@ -85,7 +85,9 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
                            [&](scene::Texture& t) { t.pigment = v.as<scene::PigmentPtr>(); });
     } else if (v.is<scene::FinishPtr>()) {
         change_top_texture(cur, item, obj,
-                           [&](scene::Texture& t) { t.finish = v.as<scene::FinishPtr>(); });
+                           [&](scene::Texture& t) {
+                               t.finish = apply_finish(t.finish, v.as<scene::FinishPtr>());
+                           });
     } else if (v.is<scene::NormalPtr>()) {
         change_top_texture(cur, item, obj,
                            [&](scene::Texture& t) { t.normal = v.as<scene::NormalPtr>(); });

@@ -69,8 +69,12 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
             top = *transformed(std::make_shared<scene::Texture>(top), t);
             continue;
         }
+        scene::FinishPtr finish;
+        if (take(cur, item, "finish", "a finish", finish)) {
+            top.finish = apply_finish(top.finish, finish);
+            continue;
+        }
         if (take(cur, item, "pigment", "a pigment", top.pigment) ||
-            take(cur, item, "finish", "a finish", top.finish) ||
             take(cur, item, "normal", "a normal", top.normal))
             continue;
         std::shared_ptr<const TextureMapValue> map;
