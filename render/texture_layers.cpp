@@ -41,15 +41,14 @@ ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) 
 
 void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
                     ResolvedLayers& out) {
-    out.count = 0;
+    out.clear();
     if (!layers || layers->empty()) {
-        out.layer[0] = {scene::Colour{}, &default_finish(), nullptr};
-        out.count = 1;
+        out.add({scene::Colour{}, &default_finish(), nullptr});
         return;
     }
-    for (auto it = layers->rbegin(); it != layers->rend() && out.count < ResolvedLayers::kMax; ++it)
-        out.layer[out.count++] = *it ? resolve_layer(**it, p)
-                                     : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr};
+    for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it)
+        out.add(*it ? resolve_layer(**it, p)
+                    : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr});
 }
 
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p) {

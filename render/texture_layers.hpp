@@ -1,7 +1,7 @@
 // Resolving a (layered, possibly patterned) texture at a point into plain layers, and the
 // light filter of a surface for shadow rays (§3.5, §3.6).
 #pragma once
-#include <array>
+#include <new>
 
 #include <glm/vec3.hpp>
 
@@ -26,10 +26,22 @@ ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p);
 
 // Top-first list of the resolved layers of `layers` (bottom-first in the scene graph); a null
 // or empty texture is the default one (black, default finish).
-struct ResolvedLayers {
+// Uninitialised storage: this lives on the stack of every shaded hit, and zeroing all
+// kMax layers showed up in profiles.
+class ResolvedLayers {
+public:
     static constexpr int kMax = 16;
-    int count = 0;
-    ResolvedLayer layer[kMax];  // only [0, count) is filled
+    int count() const { return count_; }
+    const ResolvedLayer& operator[](int i) const {
+        return *std::launder(reinterpret_cast<const ResolvedLayer*>(storage_) + i);
+    }
+    void clear() { count_ = 0; }
+    bool full() const { return count_ == kMax; }
+    void add(const ResolvedLayer& l) { new (storage_ + sizeof(ResolvedLayer) * count_++) ResolvedLayer(l); }
+
+private:
+    int count_ = 0;
+    alignas(ResolvedLayer) unsigned char storage_[kMax * sizeof(ResolvedLayer)];
 };
 void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out);
 

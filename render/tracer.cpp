@@ -182,8 +182,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     RayColour out;
     glm::dvec3 filter(1);
-    for (int i = 0; i < layers.count; ++i) {
-        const ResolvedLayer& layer = layers.layer[i];
+    for (int i = 0; i < layers.count(); ++i) {
+        const ResolvedLayer& layer = layers[i];
         const scene::Colour& c = layer.colour;
         const glm::dvec3 rgb(c.r, c.g, c.b);
         SurfaceSample s;
@@ -210,7 +210,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     // Transmission through the surface (refraction, continued rays, total internal reflection).
     bool total_internal = false;
-    const scene::Finish& top = *layers.layer[0].finish;
+    const scene::Finish& top = *layers[0].finish;
     glm::dvec3 f = filter;
     if (top.conserve_energy) f *= glm::min(glm::dvec3(1), glm::dvec3(1) - top_reflectivity);
     const double trans = std::min(1.0, std::fabs(grey(f)));
