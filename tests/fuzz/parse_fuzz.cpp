@@ -1,17 +1,21 @@
 // libFuzzer target: the parser must turn any input into a syntax tree or a ParseError, and
 // the interpreter (with small limits) into a scene or a LumenError; never crash, hang or
-// overflow the stack. Set LUMEN_FUZZ_PARSE_ONLY=1 to fuzz the parser alone.
+// overflow the stack. Set LUMEN_FUZZ_PARSE_ONLY=1 to fuzz the parser alone (or build with
+// -DLUMEN_FUZZ_PARSER_ONLY to link only the parser library).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
 
+#ifndef LUMEN_FUZZ_PARSER_ONLY
 #include "interp/interpret.hpp"
+#endif
 #include "parser/diagnostics.hpp"
 #include "parser/parser.hpp"
 
 namespace {
 
+#ifndef LUMEN_FUZZ_PARSER_ONLY
 bool parse_only() {
     static const bool only = std::getenv("LUMEN_FUZZ_PARSE_ONLY") != nullptr;
     return only;
@@ -24,6 +28,7 @@ lumen::interp::InterpOptions small_limits() {
     o.max_include_depth = 6;
     return o;
 }
+#endif
 
 }  // namespace
 
@@ -38,11 +43,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const lumen::LumenError&) {
         return 0;
     }
+#ifndef LUMEN_FUZZ_PARSER_ONLY
     if (parse_only()) return 0;
     try {
         lumen::interp::interpret_text(sources, "fuzz.pov", text, small_limits());
     } catch (const lumen::LumenError&) {
     } catch (const lumen::parser::ParseError&) {
     }
+#endif
     return 0;
 }
