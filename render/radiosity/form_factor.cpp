@@ -62,8 +62,22 @@ double point_to_polygon(const glm::dvec3& x, const glm::dvec3& n, const Patch& t
     return std::isfinite(f) ? std::clamp(f, 0.0, 1.0) : 0.0;
 }
 
+namespace {
+
+// True when no part of `b` lies strictly in front of `a`'s plane.
+bool behind(const Patch& a, const Patch& b) {
+    const double scale = std::sqrt(a.area + b.area);
+    for (const auto& v : b.vertices)
+        if (glm::dot(a.normal, v - a.centroid) > 1e-12 * scale) return false;
+    return true;
+}
+
+}  // namespace
+
 double patch_to_patch(const Patch& from, const Patch& to, const QuadratureOptions& q) {
     if (from.degenerate() || to.degenerate()) return 0;
+    // Pairs that cannot see each other's front cost nothing (most pairs in a big scene).
+    if (behind(from, to) || behind(to, from)) return 0;
     const auto& rule = graded_rule(q.order, q.grading);
     double integral = 0;
     const auto& v = from.vertices;

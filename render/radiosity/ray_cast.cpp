@@ -65,8 +65,21 @@ Estimate ray_cast(const Patch& from, const Patch& to, int rays, uint64_t seed,
     return {f, std::sqrt(f * (1 - f) / rays)};
 }
 
+NearestPatch brute_force_nearest(const std::vector<Patch>& patches, long skip) {
+    return [&patches, skip](const glm::dvec3& o, const glm::dvec3& d) -> long {
+        double best = INFINITY;
+        long hit = -1;
+        for (size_t j = 0; j < patches.size(); ++j) {
+            if (long(j) == skip) continue;
+            const double t = intersect(patches[j], o, d);
+            if (t > 0 && t < best) best = t, hit = long(j);
+        }
+        return hit;
+    };
+}
+
 std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, int rays,
-                                 uint64_t seed, double* escaped) {
+                                 uint64_t seed, const NearestPatch& nearest, double* escaped) {
     std::vector<double> row(patches.size(), 0.0);
     const Patch& from = patches[i];
     if (escaped) *escaped = 0;
@@ -78,18 +91,18 @@ std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, in
         s.position(k, u1, u2);
         const glm::dvec3 o = sample_point(from, u1, u2);
         const glm::dvec3 d = cosine_direction(from.normal, s.next(), s.next());
-        double best = INFINITY;
-        size_t hit = patches.size();
-        for (size_t j = 0; j < patches.size(); ++j) {
-            if (j == i) continue;  // flat patches cannot see themselves
-            const double t = intersect(patches[j], o, d);
-            if (t > 0 && t < best) best = t, hit = j;
-        }
-        if (hit < patches.size()) row[hit] += 1.0 / rays;
-        else ++misses;
+        const long hit = nearest(o, d);
+        if (hit >= 0 && size_t(hit) < patches.size()) row[hit] += 1.0 / rays;  // i: curved self
+        else ++misses;  // the background, or an occluder that is not a patch
     }
     if (escaped) *escaped = double(misses) / rays;
     return row;
+}
+
+std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, int rays,
+                                 uint64_t seed, double* escaped) {
+    // Flat patches cannot see themselves, so the source is left out of the search.
+    return ray_cast_row(patches, i, rays, seed, brute_force_nearest(patches, long(i)), escaped);
 }
 
 double point_to_patch_visible(const glm::dvec3& x, const glm::dvec3& n, const Patch& target,

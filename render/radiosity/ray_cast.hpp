@@ -33,6 +33,18 @@ Estimate ray_cast(const Patch& from, const Patch& to, int rays, uint64_t seed,
 std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, int rays,
                                  uint64_t seed, double* escaped = nullptr);
 
+// The nearest patch along a ray (index into the caller's patch list), or -1: the hook for
+// the tracer's BVH, whose scene may also hold occluders that are not patches.
+using NearestPatch = std::function<long(const glm::dvec3& origin, const glm::dvec3& dir)>;
+
+// The same row with a caller-supplied ray query instead of the brute-force search.
+std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, int rays,
+                                 uint64_t seed, const NearestPatch& nearest,
+                                 double* escaped = nullptr);
+
+// Brute-force NearestPatch over `patches` (skipping `skip`); the reference for tests.
+NearestPatch brute_force_nearest(const std::vector<Patch>& patches, long skip = -1);
+
 // Lambert's exact value times the fraction of `samples` jittered points on `target` that are
 // visible from x (Wallace et al. 1989).
 double point_to_patch_visible(const glm::dvec3& x, const glm::dvec3& n, const Patch& target,

@@ -108,6 +108,27 @@ TEST(RayCast, OpenSceneReportsTheEscapingFraction) {
     EXPECT_NEAR(escaped, 1 - 0.199825, 4 * std::sqrt(0.2 * 0.8 / 200'000));
 }
 
+TEST(RayCast, NearestPatchHookSeesForeignOccluders) {
+    // An occluder the patch list does not hold (as the tracer's scene would): a slab over
+    // x < 0.5 at z = 0.5 between two parallel squares halves the exchange.
+    const std::vector<Patch> pair = {floor_rect(1, 1), ceiling_rect(1, 1, 1)};
+    const Patch slab = make_patch({{-5, -5, 0.5}, {0.5, -5, 0.5}, {0.5, 5, 0.5}, {-5, 5, 0.5}});
+    const auto patches_only = brute_force_nearest(pair, 0);
+    const NearestPatch with_slab = [&](const glm::dvec3& o, const glm::dvec3& d) -> long {
+        const long hit = patches_only(o, d);
+        const double ts = intersect(slab, o, d);
+        if (ts > 0 && (hit < 0 || ts < intersect(pair[size_t(hit)], o, d))) return -1;
+        return hit;
+    };
+    const int N = 200'000;
+    double escaped = 0;
+    const auto row = ray_cast_row(pair, 0, N, 3, with_slab, &escaped);
+    EXPECT_LT(std::abs(row[1] - 0.199825 / 2), 4 * std::sqrt(0.1 * 0.9 / N));
+    EXPECT_NEAR(row[1] + escaped, 1.0, 1e-12);
+    // The hook with the plain patch list reproduces the brute-force row exactly.
+    EXPECT_EQ(ray_cast_row(pair, 0, 5000, 4, patches_only), ray_cast_row(pair, 0, 5000, 4));
+}
+
 TEST(Hemicube, DeltaFormFactorsCoverTheHemisphere) {
     // A huge parallel square at a small height covers almost the whole hemicube.
     const Patch cover = make_patch({{-1e4, -1e4, 1}, {-1e4, 1e4, 1}, {1e4, 1e4, 1}, {1e4, -1e4, 1}});
