@@ -1,6 +1,10 @@
 // Form factor matrix builders.
 #include "render/radiosity/ff_matrix.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 #include <glm/geometric.hpp>
 
 #include "render/radiosity/hemicube.hpp"
@@ -19,6 +23,37 @@ FormFactorMatrix analytic_matrix(const std::vector<Patch>& patches, const Quadra
     for (size_t i = 0; i < patches.size(); ++i)
         for (size_t j = 0; j < patches.size(); ++j)
             if (i != j) F(i, j) = patch_to_patch(patches[i], patches[j], q);
+    return F;
+}
+
+FormFactorMatrix lambert_visibility_matrix(const std::vector<Patch>& patches,
+                                           const Visibility& visible, int samples,
+                                           uint64_t seed, const QuadratureOptions& q) {
+    FormFactorMatrix F(patches.size());
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> uni(0.0, 1.0);
+    const int side = std::max(1, int(std::sqrt(double(std::max(samples, 1)))));
+    for (size_t i = 0; i < F.n; ++i)
+        for (size_t j = i + 1; j < F.n; ++j) {
+            const double fij = patch_to_patch(patches[i], patches[j], q);
+            if (fij == 0) continue;
+            double seen = 1;
+            if (visible && samples > 0) {
+                int count = 0;
+                for (int k = 0; k < samples; ++k) {
+                    const int cell = k % (side * side);
+                    const double a = (cell % side + uni(rng)) / side;
+                    const double b = (cell / side + uni(rng)) / side;
+                    const glm::dvec3 x = sample_point(patches[i], a, b);
+                    const glm::dvec3 y = sample_point(patches[j], uni(rng), uni(rng));
+                    if (visible(x, y)) ++count;
+                }
+                seen = double(count) / samples;
+            }
+            F(i, j) = fij * seen;
+            // Reciprocity: A_i F_ij = A_j F_ji.
+            F(j, i) = patches[j].area > 0 ? patches[i].area * F(i, j) / patches[j].area : 0;
+        }
     return F;
 }
 

@@ -6,6 +6,7 @@
 
 #include "render/radiosity/form_factor.hpp"
 #include "render/radiosity/patch.hpp"
+#include "render/radiosity/ray_cast.hpp"
 
 namespace lumen::render::radiosity {
 
@@ -24,6 +25,13 @@ struct FormFactorMatrix {
 // enclosures and unoccluded scenes only).
 FormFactorMatrix analytic_matrix(const std::vector<Patch>& patches,
                                  const QuadratureOptions& q = {});
+
+// Lambert's unoccluded area average times the visible fraction of `samples` stratified
+// point pairs (one on each patch), symmetric in i and j so reciprocity holds exactly. Exact
+// for unoccluded pairs; no near-field blow-up (radiosity-notes.md §5.4).
+FormFactorMatrix lambert_visibility_matrix(const std::vector<Patch>& patches,
+                                           const Visibility& visible, int samples,
+                                           uint64_t seed, const QuadratureOptions& q = {});
 
 // Gathered ray-cast rows (patches occlude each other); `symmetrise` replaces each pair by
 // the reciprocity-consistent average F_ij = (A_i F_ij + A_j F_ji) / (2 A_i).

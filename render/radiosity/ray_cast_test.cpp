@@ -100,6 +100,20 @@ TEST(RayCast, EstimatedMatrixReciprocity) {
     for (size_t i = 0; i < sym.n; ++i) EXPECT_NEAR(sym.row_sum(i), 1.0, 0.02);
 }
 
+TEST(LambertVisibility, ExactWhenOpenHalvedByABlocker) {
+    const std::vector<Patch> pair = {floor_rect(1, 1), ceiling_rect(1, 1, 1)};
+    const auto open = lambert_visibility_matrix(pair, {}, 0, 1);
+    EXPECT_NEAR(open(0, 1), 0.199825, 1e-6);
+    EXPECT_NEAR(open(1, 0), 0.199825, 1e-6);
+    const Visibility half = [](const glm::dvec3& a, const glm::dvec3& b) {
+        const double t = (0.5 - a.z) / (b.z - a.z);
+        return a.x + t * (b.x - a.x) >= 0.5;
+    };
+    const auto blocked = lambert_visibility_matrix(pair, half, 4096, 2);
+    EXPECT_NEAR(blocked(0, 1), 0.199825 / 2, 0.01);
+    EXPECT_NEAR(pair[0].area * blocked(0, 1), pair[1].area * blocked(1, 0), 1e-15);
+}
+
 TEST(RayCast, OpenSceneReportsTheEscapingFraction) {
     const std::vector<Patch> pair = {floor_rect(1, 1), ceiling_rect(1, 1, 1)};
     double escaped = 0;
