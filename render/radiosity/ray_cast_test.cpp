@@ -150,6 +150,21 @@ TEST(Hemicube, DeltaFormFactorsCoverTheHemisphere) {
     EXPECT_NEAR(row[0], 1.0, 2e-3);
 }
 
+TEST(Hemicube, ClosedCubeRows) {
+    const auto patches = unit_cube_inside(1);
+    const auto F = hemicube_matrix(patches, 64);
+    for (size_t i = 0; i < F.n; ++i) {
+        EXPECT_NEAR(F.row_sum(i), 1.0, 1e-3);
+        EXPECT_EQ(F(i, i), 0.0);
+        for (size_t j = 0; j < F.n; ++j) {
+            if (j == i) continue;
+            // Centre values: 0.239456 to the opposite face, 0.190136 to each neighbour.
+            const bool opposite = glm::dot(patches[i].normal, patches[j].normal) < -0.5;
+            EXPECT_NEAR(F(i, j), opposite ? 0.239456 : 0.190136, 0.005);
+        }
+    }
+}
+
 TEST(Hemicube, KnownAliasingAgainstLambert) {
     const glm::dvec3 x(0.5, 0.5, 0), up(0, 0, 1);
     const std::vector<Patch> parallel = {ceiling_rect(1, 1, 1)};
