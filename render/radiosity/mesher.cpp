@@ -88,9 +88,6 @@ private:
     bool mirrored_ = false;
 };
 
-// Unit vectors (u, w) with u × w = a for unit a.
-void frame(const glm::dvec3& a, glm::dvec3& u, glm::dvec3& w) { tangent_frame(a, u, w); }
-
 void mesh_box(const scene::Box& box, Builder& b) {
     const glm::dvec3 lo = glm::min(box.min, box.max), hi = glm::max(box.min, box.max);
     for (int a = 0; a < 3; ++a) {
@@ -124,7 +121,7 @@ void mesh_sphere(const scene::Sphere& s, Builder& b) {
 void mesh_disc_at(const glm::dvec3& c, const glm::dvec3& n, double radius, double hole,
                   Builder& b) {
     glm::dvec3 u, w;
-    frame(glm::normalize(n), u, w);
+    tangent_frame(glm::normalize(n), u, w);
     const double inner = std::clamp(hole, 0.0, radius);
     b.grid([&](double s, double t) {
         const double r = inner + (radius - inner) * s, phi = two_pi * t;
@@ -140,7 +137,7 @@ void mesh_cone(const glm::dvec3& base, double r0, const glm::dvec3& cap, double 
     if (!(len > 0)) return;
     const glm::dvec3 a = axis / len;
     glm::dvec3 u, w;
-    frame(a, u, w);
+    tangent_frame(a, u, w);
     const double slant = std::hypot(len, r1 - r0);
     b.grid([&](double s, double t) {
         const double phi = two_pi * s, r = r0 + (r1 - r0) * t;
@@ -176,7 +173,7 @@ void mesh_plane(const scene::Object& o, const scene::Plane& pl, const MeshOption
     const glm::dvec3 n = glm::normalize(o.transform.normal(pl.normal));
     const glm::dvec3 origin = o.transform.point(pl.normal * pl.distance);
     glm::dvec3 u, w;
-    frame(n, u, w);
+    tangent_frame(n, u, w);
     const glm::dvec3 centre = 0.5 * (opt.bounds_min + opt.bounds_max);
     const double half = glm::length(opt.bounds_max - opt.bounds_min) + 1;
     const glm::dvec3 c = centre - glm::dot(centre - origin, n) * n;  // centre on the plane
@@ -194,6 +191,8 @@ void mesh_plane(const scene::Object& o, const scene::Plane& pl, const MeshOption
         u0 = std::min(u0, glm::dot(p - c, u)), u1 = std::max(u1, glm::dot(p - c, u));
         w0 = std::min(w0, glm::dot(p - c, w)), w1 = std::max(w1, glm::dot(p - c, w));
     }
+    glm::dvec3 inner(0);  // a point inside the convex region, to orient its edge normals
+    for (const auto& p : region) inner += p / double(region.size());
     const double step = std::max(opt.max_edge, 1e-9);
     const int nu = std::clamp(int(std::ceil((u1 - u0) / step)), 1, 4096);
     const int nw = std::clamp(int(std::ceil((w1 - w0) / step)), 1, 4096);
@@ -207,7 +206,7 @@ void mesh_plane(const scene::Object& o, const scene::Plane& pl, const MeshOption
             for (size_t k = 0; k < region.size() && cell.size() >= 3; ++k) {
                 const glm::dvec3 &p = region[k], &q = region[(k + 1) % region.size()];
                 glm::dvec3 out_n = glm::cross(q - p, n);  // region is CCW about n
-                if (glm::dot(out_n, c - p) > 0) out_n = -out_n;
+                if (glm::dot(out_n, inner - p) > 0) out_n = -out_n;
                 cell = clip(cell, out_n, glm::dot(out_n, p));
             }
             if (cell.size() < 3) continue;

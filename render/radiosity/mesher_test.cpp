@@ -113,6 +113,11 @@ TEST(Mesher, PlaneClippedToTheBounds) {
     const auto tilted = mesh(object(scene::Plane{glm::normalize(glm::dvec3(1, 1, 1)), 0}), 0.2);
     EXPECT_NEAR(total_area(tilted), 3 * std::sqrt(3.0), 1e-9);
     EXPECT_TRUE(mesh(object(scene::Plane{{0, 1, 0}, 5}), 0.3).empty());  // outside the bounds
+    // Cutting off one corner of the cube: a triangle with legs 0.5 (area √3/8), away from the
+    // cube's centre.
+    const auto corner =
+        mesh(object(scene::Plane{glm::normalize(glm::dvec3(1, 1, 1)), 2.5 / std::sqrt(3.0)}), 0.1);
+    EXPECT_NEAR(total_area(corner), std::sqrt(3.0) / 8, 1e-9);
 }
 
 TEST(Mesher, TrianglePolygonAndMesh) {

@@ -109,7 +109,8 @@ SolveReport solve(Solver& solver, const RadiositySystem& s, const SolveOptions& 
         const bool more = solver.step();
         ++report.iterations;
         report.residual = solver.residual();
-        if (!std::isfinite(report.residual)) {
+        // Stop a diverging (allow_unstable) run long before overflow could make NaN.
+        if (!std::isfinite(report.residual) || report.residual > 1e100) {
             report.status = SolveStatus::Unstable;
             report.message = solver.name() + " diverged (non-finite radiosity)";
             return report;

@@ -22,9 +22,14 @@ public:
             for (size_t j = 0; j < n; ++j)
                 if (j != i) gathered += system_.F(i, j) * B_[j];
             // Solve row i for B_i exactly (curved patches have F_ii > 0).
-            const glm::dvec3 diag = 1.0 - system_.rho[i] * system_.F(i, i);
-            const glm::dvec3 target =
-                (system_.emission[i] + system_.rho[i] * gathered) / diag;
+            const double fii = system_.F(i, i);
+            glm::dvec3 target = system_.emission[i] + system_.rho[i] * gathered;
+            for (int c = 0; c < 3; ++c) {
+                const double diag = 1.0 - system_.rho[i][c] * fii;
+                // diag <= 0 only for ρ F_ii >= 1 (allow_unstable runs): plain update then.
+                target[c] = diag > 1e-12 ? target[c] / diag
+                                         : target[c] + system_.rho[i][c] * fii * B_[i][c];
+            }
             B_[i] += omega_ * (target - B_[i]);
         }
         residual_ = residual_of(system_, B_);

@@ -278,6 +278,19 @@ TEST(Stability, ClosedWhiteFurnaceIsBounceLimitedOrSingular) {
     EXPECT_THROW(lu->init(s), LumenError);
 }
 
+TEST(Stability, DivergingRunStopsBeforeOverflow) {
+    auto s = furnace_sphere(0.5, 1.0);
+    for (auto& r : s.rho) r = glm::dvec3(1.5, 0.0, 0.5);  // invalid, run anyway
+    for (auto& solver : all_solvers()) {
+        if (solver->name() == "LU") continue;
+        const auto report = solve(*solver, s, {1e-9, 1'000'000, true});
+        EXPECT_EQ(report.status, SolveStatus::Unstable) << solver->name();
+        for (const auto& b : solver->display())
+            EXPECT_TRUE(std::isfinite(b.x) && std::isfinite(b.y) && std::isfinite(b.z))
+                << solver->name();
+    }
+}
+
 TEST(Stability, IterationCapFiresNearRhoOne) {
     const auto s = furnace_sphere(0.999, 1.0);
     auto jacobi = make_jacobi_solver();
