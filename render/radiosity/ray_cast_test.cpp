@@ -182,6 +182,15 @@ TEST(Hemicube, KnownAliasingAgainstLambert) {
     EXPECT_GT(e50, 0.01);
     EXPECT_LT(e50, 0.2);
     EXPECT_GT(e50, e64);
+    // The measured table of radiosity-notes.md §2.5, reproduced pixel for pixel.
+    struct Row { int n; double parallel, perpendicular; };
+    for (const Row r : {Row{16, 0.240171, 0.195246}, Row{50, 0.253986, 0.195282},
+                        Row{64, 0.239501, 0.191353}, Row{256, 0.239459, 0.190436}}) {
+        EXPECT_NEAR(hc(parallel, r.n), r.parallel, 1e-6) << r.n;
+        EXPECT_NEAR(hc(perpendicular, r.n), r.perpendicular, 1e-6) << r.n;
+    }
+    // N = 10 puts pixel centres exactly on the target's edges: +31 % (ties counted in).
+    EXPECT_GT(hc(parallel, 10) / 0.239456 - 1, 0.2);
     // Proximity error: the centre value stands for the whole patch (+20 % for this pair).
     const std::vector<Patch> pair = {floor_rect(1, 1), ceiling_rect(1, 1, 1)};
     EXPECT_NEAR(hemicube_row(pair, 0, 64)[1] / 0.199825, 1.198, 0.01);
