@@ -34,7 +34,7 @@ merge {
   texture { Clear }
   translate <-1.1, 0.7, 0>
 }
-// intersection: a lens from two spheres and a cylinder
+// intersection: a box with its corners rounded off by a sphere
 intersection {
   box { <-0.7, -0.7, -0.7>, <0.7, 0.7, 0.7> }
   sphere { 0, 0.9 }
