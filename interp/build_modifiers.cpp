@@ -107,7 +107,9 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
             scene::LayeredTexture layers = build_texture(sub);
             obj.interior_texture.insert(obj.interior_texture.end(), layers.begin(), layers.end());
         } else if (b->keyword == "clipped_by") {
-            obj.clipped_by = read_bound_objects(cur, *b, obj);
+            // Several clipped_by blocks all clip (POV keeps every one).
+            auto more = read_bound_objects(cur, *b, obj);
+            obj.clipped_by.insert(obj.clipped_by.end(), more.begin(), more.end());
         } else if (b->keyword == "bounded_by") {
             obj.bounded_by = read_bound_objects(cur, *b, obj);
         } else if (b->keyword != "radiosity") {  // object radiosity{importance}: sampling only

@@ -149,6 +149,13 @@ TEST_F(BuildObject, ClippedByIsInWorldSpace) {
     expect_vec(o->clipped_by[0]->transform.point({0, 0, 0}), {1, 0, 0});
 }
 
+TEST_F(BuildObject, SeveralClippedByBlocksAllClip) {
+    scene::ObjectPtr o = first_object(
+        "sphere { 0, 1 clipped_by { plane { y, 0 } } clipped_by { plane { x, 0 } } }");
+    ASSERT_EQ(o->clipped_by.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<scene::Plane>(o->clipped_by[1]->shape));
+}
+
 TEST_F(BuildObject, MeshWithPerTriangleTexture) {
     auto m = shape_of<scene::Mesh>(
         "mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } "

@@ -8,22 +8,29 @@ namespace lumen::interp {
 namespace {
 
 // A tiny JSON tree: built in key order, then printed.
+// Object members are two parallel vectors (keys, values): a vector of pair<string, Json>
+// needs Json complete, which clang's libstdc++ checks refuse.
 struct Json {
     enum class Kind { Number, String, Bool, Array, Object } kind = Kind::Object;
     double number = 0;
     std::string text;
     bool flag = false;
     std::vector<Json> items;                             // Array
-    std::vector<std::pair<std::string, Json>> members;  // Object
+    std::vector<std::string> keys;                      // Object
+    std::vector<Json> values;                           // Object, parallel to keys
 
     static Json num(double v) { Json j; j.kind = Kind::Number; j.number = v; return j; }
     static Json str(std::string s) { Json j; j.kind = Kind::String; j.text = std::move(s); return j; }
     static Json boolean(bool b) { Json j; j.kind = Kind::Bool; j.flag = b; return j; }
     static Json array() { Json j; j.kind = Kind::Array; return j; }
 
-    bool empty() const { return kind == Kind::Object ? members.empty() : kind == Kind::Array && items.empty(); }
+    bool empty() const { return kind == Kind::Object ? keys.empty() : kind == Kind::Array && items.empty(); }
     bool scalar() const { return kind != Kind::Array && kind != Kind::Object; }
-    Json& put(const std::string& key, Json v) { members.emplace_back(key, std::move(v)); return *this; }
+    Json& put(const std::string& key, Json v) {
+        keys.push_back(key);
+        values.push_back(std::move(v));
+        return *this;
+    }
     Json& push(Json v) { items.push_back(std::move(v)); return *this; }
 };
 
@@ -73,11 +80,11 @@ void print(const Json& j, int indent, std::string& out) {
         }
         case Json::Kind::Object: {
             out += "{";
-            for (size_t i = 0; i < j.members.size(); ++i) {
-                out += (i ? ",\n" : "\n") + inner + quote(j.members[i].first) + ": ";
-                print(j.members[i].second, indent + 1, out);
+            for (size_t i = 0; i < j.keys.size(); ++i) {
+                out += (i ? ",\n" : "\n") + inner + quote(j.keys[i]) + ": ";
+                print(j.values[i], indent + 1, out);
             }
-            if (!j.members.empty()) out += "\n" + pad;
+            if (!j.keys.empty()) out += "\n" + pad;
             out += "}";
             return;
         }

@@ -40,6 +40,8 @@ inline scene::Camera look_at_camera(glm::dvec3 location, glm::dvec3 look_at) {
 }
 
 struct Material {
+    Material() = default;
+    Material(scene::Colour c) : colour(c) {}  // NOLINT: implicit on purpose, `Material m{c}`
     scene::Colour colour{0, 0, 0, 0, 0};
     scene::Finish finish;
     std::optional<scene::Interior> interior;

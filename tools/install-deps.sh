@@ -8,6 +8,7 @@ packages=(
     cmake g++ make pkg-config
     povray povray-includes povray-examples
     clang libclang-rt-14-dev
+    bc  # bench/render_vs_povray.sh arithmetic
 )
 
 missing=()
