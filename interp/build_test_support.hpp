@@ -27,8 +27,7 @@ protected:
         try {
             run(text);
         } catch (const LumenError& e) {
-            std::string f = format_diagnostic(e.diag);
-            return f.substr(0, f.find('\n'));
+            return format_headline(e.diag);
         }
         return "no error";
     }

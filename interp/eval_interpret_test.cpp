@@ -15,8 +15,7 @@ std::string first_error_line(const std::string& text) {
     try {
         interpret(text);
     } catch (const LumenError& e) {
-        std::string f = format_diagnostic(e.diag);
-        return f.substr(0, f.find('\n'));
+        return format_headline(e.diag);
     }
     return "";
 }

@@ -56,8 +56,7 @@ protected:
         try {
             run(text);
         } catch (const LumenError& e) {
-            std::string f = format_diagnostic(e.diag);
-            return f.substr(0, f.find('\n'));
+            return format_headline(e.diag);
         }
         return "";
     }
@@ -65,8 +64,7 @@ protected:
         try {
             value(expr);
         } catch (const LumenError& e) {
-            std::string f = format_diagnostic(e.diag);
-            return f.substr(0, f.find('\n'));
+            return format_headline(e.diag);
         }
         return "";
     }

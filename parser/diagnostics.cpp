@@ -36,8 +36,12 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+std::string format_headline(const Diagnostic& d) {
+    return d.loc.str() + ": " + severity_name(d.severity) + ": " + d.message;
+}
+
 std::string format_diagnostic(const Diagnostic& d) {
-    std::string out = d.loc.str() + ": " + severity_name(d.severity) + ": " + d.message + "\n";
+    std::string out = format_headline(d) + "\n";
     if (d.loc.file && d.loc.line > 0) {
         std::string_view line = d.loc.file->line_text(d.loc.line);
         if (!line.empty()) {

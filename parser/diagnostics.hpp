@@ -35,6 +35,10 @@ struct LumenError : std::runtime_error {
 //   in file included from main.pov:3:1
 std::string format_diagnostic(const Diagnostic& d);
 
+// Just the first line of format_diagnostic, without the newline:
+//   scene.pov:12:5: error: unknown keyword 'spere'
+std::string format_headline(const Diagnostic& d);
+
 // The candidate closest to `word` by edit distance, if it is close enough to be a likely
 // misspelling; empty otherwise.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
