@@ -102,7 +102,21 @@ std::string usage_text() {
            switch_help() +
            "\n"
            "INI-only keys include Declare=NAME=value, File_Gamma=, Bits_Per_Color=, "
-           "Include_Ini=.\n";
+           "Include_Ini=.\n"
+           "\n"
+           "radiosity (lumen's patch solution; README \"Radiosity\"):\n"
+           "  Radiosity=on|off              force on (POV defaults) or ignore the scene's block\n"
+           "  Radiosity_Method=auto|matrix|jacobi|gauss_seidel|progressive\n"
+           "  Radiosity_Bounces=N           bounces (scene's recursion_limit; 0 = converge)\n"
+           "  Radiosity_Patch_Size=S        largest element edge (from the scene bounds)\n"
+           "  Radiosity_Form_Factors=raycast|analytic|hemicube, Radiosity_FF_Rays=N,\n"
+           "  Radiosity_Hemicube_Res=R      form factor method, rays per vertex, resolution\n"
+           "  Radiosity_Gather_Rays=N       final gather rays (from count)\n"
+           "  Radiosity_Cache_Error=E       irradiance cache error (from error_bound)\n"
+           "  Radiosity_Display=gather|preview  final gather or interpolated patches\n"
+           "  Radiosity_Tolerance=T         iterative/progressive stop\n"
+           "  Radiosity_File_Name=F (+RF), Radiosity_From_File (+RFI), Radiosity_To_File (+RFO)\n"
+           "                                load/save the patch solution\n";
 }
 
 }  // namespace lumen::cli

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 
 #include "cli/ini_file.hpp"
 #include "cli/options.hpp"
@@ -122,6 +123,42 @@ void ignored(Options& o, const Setting& s) {
 
 void accepted(Options&, const Setting&) {}
 
+// One of `names` (case-insensitive), as its index.
+int choice(const Setting& s, std::initializer_list<const char*> names, const char* expected) {
+    int i = 0;
+    for (const char* n : names) {
+        if (iequals(s.text, n)) return i;
+        ++i;
+    }
+    bad_value(s, expected);
+}
+
+// lumen's radiosity keys (README "Radiosity"); POV's own +RF keys name the patch solution file.
+void set_radiosity_method(Options& o, const Setting& s) {
+    using M = render::radiosity::Method;
+    static const M methods[] = {M::Auto, M::Matrix, M::Jacobi, M::GaussSeidel, M::Progressive};
+    o.radiosity.method = methods[choice(s, {"auto", "matrix", "jacobi", "gauss_seidel", "progressive"},
+                                        "auto, matrix, jacobi, gauss_seidel or progressive")];
+}
+
+void set_form_factors(Options& o, const Setting& s) {
+    using F = render::radiosity::FormFactorMethod;
+    static const F methods[] = {F::RayCast, F::Analytic, F::Hemicube};
+    o.radiosity.form_factors =
+        methods[choice(s, {"raycast", "analytic", "hemicube"}, "raycast, analytic or hemicube")];
+}
+
+void set_radiosity_display(Options& o, const Setting& s) {
+    using D = render::radiosity::DisplayMode;
+    o.radiosity.display = choice(s, {"gather", "preview"}, "gather or preview") ? D::Preview : D::Gather;
+}
+
+double to_positive(const Setting& s) {
+    const double v = to_double(s);
+    if (!(v > 0)) bad_value(s, "a positive number");
+    return v;
+}
+
 struct IniKey {
     const char* name;
     void (*set)(Options&, const Setting&);
@@ -193,6 +230,30 @@ const IniKey kKeys[] = {
     {"Include_Ini",
      [](Options& o, const Setting& s) { read_ini_file(o, s.sources, s.text, s.loc, s.depth + 1); }},
     {"Verbose", [](Options& o, const Setting& s) { o.verbose = to_bool(s); }},
+    {"Radiosity",
+     [](Options& o, const Setting& s) { o.radiosity.enabled = to_bool(s); }},
+    {"Radiosity_Method", set_radiosity_method},
+    {"Radiosity_Bounces",
+     [](Options& o, const Setting& s) { o.radiosity.bounces = to_int_at_least(s, 0); }},
+    {"Radiosity_Patch_Size",
+     [](Options& o, const Setting& s) { o.radiosity.patch_size = to_positive(s); }},
+    {"Radiosity_Form_Factors", set_form_factors},
+    {"Radiosity_FF_Rays",
+     [](Options& o, const Setting& s) { o.radiosity.ff_rays = to_int_at_least(s, 1); }},
+    {"Radiosity_Hemicube_Res",
+     [](Options& o, const Setting& s) { o.radiosity.hemicube_res = to_int_at_least(s, 2); }},
+    {"Radiosity_Gather_Rays",
+     [](Options& o, const Setting& s) { o.radiosity.gather_rays = to_int_at_least(s, 1); }},
+    {"Radiosity_Cache_Error",
+     [](Options& o, const Setting& s) { o.radiosity.cache_error = to_positive(s); }},
+    {"Radiosity_Display", set_radiosity_display},
+    {"Radiosity_Tolerance",
+     [](Options& o, const Setting& s) { o.radiosity.tolerance = to_positive(s); }},
+    {"Radiosity_File_Name", [](Options& o, const Setting& s) { o.radiosity.file = s.text; }},
+    {"Radiosity_From_File",
+     [](Options& o, const Setting& s) { o.radiosity.from_file = to_bool(s); }},
+    {"Radiosity_To_File", [](Options& o, const Setting& s) { o.radiosity.to_file = to_bool(s); }},
+    {"Radiosity_Vain_Pretrace", accepted},  // lumen has no pretrace
     // Accepted so POV-Ray INI files load; they change nothing in lumen's output.
     {"Display", accepted},
     {"Pause_When_Done", accepted},

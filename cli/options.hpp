@@ -8,6 +8,7 @@
 #include "interp/interpret.hpp"
 #include "parser/source.hpp"
 #include "render/image_output.hpp"
+#include "render/radiosity/options.hpp"
 #include "render/render.hpp"
 
 namespace lumen::cli {
@@ -20,6 +21,7 @@ struct Options {
     render::RenderOptions render;  // size, AA, threads, block size, quality
     render::OutputOptions image;   // file type, bits, alpha, file gamma
     interp::InterpOptions scene;   // library paths, Declare=, Version=
+    render::radiosity::RadiosityOptions radiosity;  // Radiosity_* keys
 
     // Partial render exactly as given: a fraction or a 1-based index (resolved by pixel_range).
     std::optional<double> start_row, end_row, start_col, end_col;

@@ -205,6 +205,41 @@ TEST(IniOptions, GammaVersionAndPaths) {
     EXPECT_DOUBLE_EQ(parse({"s.pov", "File_Gamma=2.2", "File_Gamma=sRGB"}).image.file_gamma, -1.0);
 }
 
+TEST(IniOptions, RadiosityKeys) {
+    using namespace render::radiosity;
+    const Options d = parse({"s.pov"});
+    EXPECT_FALSE(d.radiosity.enabled.has_value());
+    EXPECT_EQ(d.radiosity.method, Method::Auto);
+    EXPECT_EQ(d.radiosity.display, DisplayMode::Gather);
+    const Options o = parse({"s.pov", "Radiosity=off", "radiosity_method=Gauss_Seidel",
+                             "Radiosity_Bounces=0", "Radiosity_Patch_Size=2.5",
+                             "Radiosity_Form_Factors=hemicube", "Radiosity_FF_Rays=64",
+                             "Radiosity_Hemicube_Res=32", "Radiosity_Gather_Rays=100",
+                             "Radiosity_Cache_Error=0.2", "Radiosity_Display=preview",
+                             "Radiosity_Tolerance=1e-3", "+RFsol.rad", "+RFI", "+RFO", "+R4"});
+    EXPECT_EQ(o.radiosity.enabled, false);
+    EXPECT_EQ(o.radiosity.method, Method::GaussSeidel);
+    EXPECT_EQ(o.radiosity.bounces, 0);
+    EXPECT_DOUBLE_EQ(o.radiosity.patch_size, 2.5);
+    EXPECT_EQ(o.radiosity.form_factors, FormFactorMethod::Hemicube);
+    EXPECT_EQ(o.radiosity.ff_rays, 64);
+    EXPECT_EQ(o.radiosity.hemicube_res, 32);
+    EXPECT_EQ(o.radiosity.gather_rays, 100);
+    EXPECT_DOUBLE_EQ(*o.radiosity.cache_error, 0.2);
+    EXPECT_EQ(o.radiosity.display, DisplayMode::Preview);
+    EXPECT_DOUBLE_EQ(o.radiosity.tolerance, 1e-3);
+    EXPECT_EQ(o.radiosity.file, "sol.rad");
+    EXPECT_TRUE(o.radiosity.from_file);
+    EXPECT_TRUE(o.radiosity.to_file);
+    EXPECT_EQ(o.render.aa_depth, 4);  // +R is still the anti-aliasing depth
+    EXPECT_NE(error_of({"s.pov", "Radiosity_Method=lu"}).message.find("auto, matrix"),
+              std::string::npos);
+    EXPECT_NE(error_of({"s.pov", "Radiosity_Patch_Size=0"}).message.find("positive"),
+              std::string::npos);
+    EXPECT_NE(error_of({"s.pov", "Radiosity_Bounces=-1"}).message.find(">= 0"),
+              std::string::npos);
+}
+
 TEST(Frames, StillImageOutputName) {
     Options o = parse({"dir/my.scene.pov"});
     EXPECT_EQ(output_path(o, 0), "my.scene.png");

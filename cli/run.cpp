@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <new>
+#include <thread>
 
 #include "cli/big_stack.hpp"
 #include "cli/command_line.hpp"
 #include "cli/frames.hpp"
 #include "cli/progress.hpp"
+#include "cli/radiosity_pass.hpp"
 #include "interp/dump_scene.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/parser.hpp"
@@ -37,16 +39,23 @@ int report_unsupported(const scene::Scene& scene) {
 }
 
 void render_frame(const Options& o, const Frame& frame, const scene::Scene& scene,
-                  double parse_seconds) {
+                  double parse_seconds, RadiosityPass& radiosity) {
     const bool terminal = isatty(fileno(stderr)) != 0;
     const std::string label = frame.number ? "frame " + std::to_string(frame.number) : "render";
-    ProgressBar bar(terminal, label);
     render::RenderStats stats;
     const auto start = Clock::now();
-    const render::Image image = render::render(scene, effective_render_options(o), &stats,
+    render::RenderOptions options = effective_render_options(o);
+    std::vector<std::string> log;
+    options.indirect = radiosity.prepare(scene, o.radiosity, options.threads > 0 ? options.threads
+                                                                                 : int(std::thread::hardware_concurrency()),
+                                         log);
+    for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
+    ProgressBar bar(terminal, label);
+    const render::Image image = render::render(scene, options, &stats,
                                                [&](double f) { bar.update(f); });
     const double render_seconds = seconds_since(start);
     bar.finish();
+    if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
     if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);
     std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s\n",
                  o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
@@ -60,16 +69,18 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
 
 int run_frames(const Options& o, SourceManager& sources) {
     const interp::WarningSink warn = [](const Diagnostic& d) { print_diagnostic(d); };
+    RadiosityPass radiosity;  // one solution serves frames where only the camera moves
     for (const Frame& frame : plan_frames(o)) {
         const auto start = Clock::now();
-        const scene::Scene scene = interp::interpret_file(sources, o.input, frame.scene, warn);
+        scene::Scene scene = interp::interpret_file(sources, o.input, frame.scene, warn);
+        apply_radiosity_switch(scene, o.radiosity);
         const double parse_seconds = seconds_since(start);
         if (o.dump_scene) {
             std::fputs(interp::dump_scene_json(scene).c_str(), stdout);
             return 0;  // the first frame describes the scene
         }
         if (o.check) return report_unsupported(scene);
-        render_frame(o, frame, scene, parse_seconds);
+        render_frame(o, frame, scene, parse_seconds, radiosity);
     }
     return 0;
 }

@@ -42,6 +42,11 @@ void read_radiosity(BuildContext& ctx, const BlockValue& block, scene::Radiosity
         else if (w == "importance") cur.expect_float(w);
         else if (w == "subsurface") cur.optional_bool();
         else cur.fail_unexpected(item, keywords);
+        // lumen's patch radiosity has no place for these (README "Radiosity").
+        const bool ignored = w == "importance" || w == "max_sample" ||
+                             (w == "normal" && r.normal) || (w == "media" && r.media) ||
+                             w == "subsurface";
+        if (ignored) cur.warn(item.loc, "radiosity " + w + " is not supported and has no effect");
     }
 }
 

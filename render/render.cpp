@@ -67,6 +67,7 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
     TraceOptions trace_options;
     trace_options.quality = options.quality;
     trace_options.alpha = options.alpha;
+    trace_options.indirect = options.indirect;
     const Tracer tracer(scene, intersector, trace_options);
     const CameraModel camera(scene.camera, options.width, options.height);
     const BlockRenderer blocks_renderer(tracer, camera, options,

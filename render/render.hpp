@@ -8,6 +8,8 @@
 
 namespace lumen::render {
 
+class IndirectLight;  // render/indirect_light.hpp
+
 struct RenderOptions {
     int width = 800, height = 600;
     bool antialias = false;
@@ -21,6 +23,7 @@ struct RenderOptions {
     int block_size = 32;      // +BS
     int quality = 9;          // +Q
     bool alpha = false;       // +UA: the background is transparent (alpha channel)
+    const IndirectLight* indirect = nullptr;  // radiosity (render/indirect_light.hpp)
     // Partial render, 0-based inclusive pixel ranges (full image when -1).
     int start_row = 0, end_row = -1, start_col = 0, end_col = -1;
 };

@@ -182,6 +182,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     RayColour out;
     glm::dvec3 filter(1);
+    glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
+    bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
         const ResolvedLayer& layer = layers[i];
         const scene::Colour& c = layer.colour;
@@ -195,6 +197,12 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.finish = layer.finish;
         s.double_illuminate = double_illuminate;
         out.rgb += filter * local_light(s, env_, *ctx.interiors, state);
+        if (options_.indirect && layer.finish->diffuse > 0 && quality >= 9) {
+            // Radiosity in place of ambient: diffuse × pigment × incident indirect light.
+            if (!have_indirect) indirect = options_.indirect->incident(hit, raw_n, state);
+            have_indirect = true;
+            out.rgb += filter * rgb * (layer.finish->diffuse * s.opacity) * indirect;
+        }
 
         if (quality >= 8) {
             const Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);

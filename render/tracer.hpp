@@ -3,6 +3,7 @@
 #pragma once
 #include <vector>
 
+#include "render/indirect_light.hpp"
 #include "render/interior_list.hpp"
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
@@ -21,6 +22,7 @@ struct RayColour {
 struct TraceOptions {
     int quality = 9;
     bool alpha = false;  // +UA: the background is transparent
+    const IndirectLight* indirect = nullptr;  // radiosity; null: none
 };
 
 class Tracer {

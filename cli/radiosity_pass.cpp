@@ -1,0 +1,110 @@
+#include "cli/radiosity_pass.hpp"
+
+#include <cstdio>
+
+#include "interp/dump_scene.hpp"
+#include "render/radiosity/solution_io.hpp"
+
+namespace lumen::cli {
+
+namespace rad = render::radiosity;
+
+namespace {
+
+class GeometryIntersector final : public render::Intersector {
+public:
+    explicit GeometryIntersector(const render::Geometry& g) : g_(g) {}
+    bool intersect(const render::Ray& ray, double t_min, double t_max, render::Hit& hit,
+                   bool shadow) const override {
+        return g_.intersect(ray, t_min, t_max, hit, shadow);
+    }
+
+private:
+    const render::Geometry& g_;
+};
+
+std::string seconds(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f s", s);
+    return buf;
+}
+
+}  // namespace
+
+void apply_radiosity_switch(scene::Scene& scene, const rad::RadiosityOptions& o) {
+    if (!o.enabled) return;
+    if (!*o.enabled) scene.globals.radiosity.reset();
+    else if (!scene.globals.radiosity) scene.globals.radiosity = scene::RadiositySettings{};
+}
+
+uint64_t scene_key(const scene::Scene& scene) {
+    scene::Scene copy = scene;
+    copy.camera = scene::Camera{};
+    const std::string json = interp::dump_scene_json(copy);
+    uint64_t h = 1469598103934665603ULL;  // FNV-1a
+    for (unsigned char c : json) h = (h ^ c) * 1099511628211ULL;
+    return h;
+}
+
+const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
+                                                    const rad::RadiosityOptions& options,
+                                                    int threads, std::vector<std::string>& log) {
+    display_.reset();
+    if (!scene.globals.radiosity) return nullptr;
+    options_ = options;
+    geometry_ = std::make_unique<render::Geometry>(scene);
+    intersector_ = std::make_unique<GeometryIntersector>(*geometry_);
+    mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(scene, options.patch_size));
+    for (const std::string& w : mesh_->warnings) log.push_back(w);
+    if (scene.sky_sphere)
+        log.push_back(scene.sky_sphere->loc.str() +
+                      ": warning: radiosity sees the background colour, not the sky_sphere");
+
+    const uint64_t key = scene_key(scene);
+    const size_t unknowns = mesh_->unknowns();
+    reused_ = loaded_ = false;
+    if (options.from_file && !options.file.empty()) {
+        solution_ = rad::load_solution(options.file, key, unknowns);
+        loaded_ = true;
+    } else if (solution_ && solution_->scene_key == key && solution_->B.size() == unknowns &&
+               bounces_ == rad::effective_bounces(scene, options)) {
+        reused_ = true;  // only the camera changed: the solution is view-independent
+    } else {
+        info_ = {};
+        solution_ = rad::solve_scene(scene, *mesh_, *intersector_, options, threads, info_);
+        solution_->scene_key = key;
+        for (const std::string& w : info_.warnings) log.push_back(w);
+        if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
+    }
+    bounces_ = rad::effective_bounces(scene, options);
+
+    const rad::DisplaySettings ds = rad::display_settings(scene, options);
+    if (options.display == rad::DisplayMode::Preview)
+        display_ = rad::make_preview(*mesh_, *solution_, ds);
+    else
+        display_ = rad::make_gather(scene, *mesh_, *solution_, *intersector_, ds);
+    return display_.get();
+}
+
+std::string RadiosityPass::summary() const {
+    if (!mesh_ || !solution_) return {};
+    std::string line = "radiosity: " + std::to_string(mesh_->elements.size()) + " patches, ";
+    if (loaded_) {
+        line += "solution loaded from " + options_.file;
+    } else if (reused_) {
+        line += "solution reused (only the camera changed)";
+    } else {
+        line += "form factors " + seconds(info_.form_factor_seconds) + " (" +
+                rad::form_factor_name(options_.form_factors) + " " +
+                std::to_string(options_.ff_rays) + " rays), solve " + seconds(info_.solve_seconds) +
+                " (" + info_.method + " " + std::to_string(info_.iterations) + ")";
+    }
+    if (const auto* g = dynamic_cast<const rad::GatherStats*>(display_.get()))
+        line += ", gather " + seconds(g->gather_seconds()) + " (" +
+                std::to_string(g->cache_points()) + " cache points)";
+    else
+        line += ", preview";
+    return line;
+}
+
+}  // namespace lumen::cli

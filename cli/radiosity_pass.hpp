@@ -1,0 +1,54 @@
+// The radiosity pass of a frame: applies Radiosity=on/off to the scene, meshes it, computes
+// (or loads, or reuses from the previous frame) the patch solution, and provides the
+// tracer's indirect light. One solution serves every frame in which only the camera moved.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "render/geometry.hpp"
+#include "render/indirect_light.hpp"
+#include "render/radiosity/display.hpp"
+#include "render/radiosity/options.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+#include "render/radiosity/scene_solution.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::cli {
+
+// Radiosity=on gives a scene without a block POV's defaults; Radiosity=off drops the block.
+void apply_radiosity_switch(scene::Scene& scene, const render::radiosity::RadiosityOptions& o);
+
+// A hash of everything in the scene but the camera.
+uint64_t scene_key(const scene::Scene& scene);
+
+class RadiosityPass {
+public:
+    // Prepares the indirect light for `scene` (which must outlive the pass's use). Returns
+    // null when the scene has no radiosity. Reuses the previous solution when the scene key
+    // and mesh match. `log` receives warnings and the +V line.
+    const render::IndirectLight* prepare(const scene::Scene& scene,
+                                         const render::radiosity::RadiosityOptions& options,
+                                         int threads, std::vector<std::string>& log);
+
+    // The +V line, once the frame is rendered (gather figures included).
+    std::string summary() const;
+
+    bool reused() const { return reused_; }
+    const render::radiosity::Solution* solution() const {
+        return solution_ ? &*solution_ : nullptr;
+    }
+
+private:
+    std::unique_ptr<render::Geometry> geometry_;
+    std::unique_ptr<render::Intersector> intersector_;
+    std::unique_ptr<render::radiosity::SceneMesh> mesh_;
+    std::optional<render::radiosity::Solution> solution_;
+    std::unique_ptr<render::IndirectLight> display_;
+    render::radiosity::SolveInfo info_;
+    render::radiosity::RadiosityOptions options_;
+    bool reused_ = false, loaded_ = false;
+    int bounces_ = 0;
+};
+
+}  // namespace lumen::cli

@@ -1,0 +1,240 @@
+#include "render/radiosity/display.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+#include <mutex>
+#include <shared_mutex>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "render/radiosity/ray_cast.hpp"
+
+namespace lumen::render::radiosity {
+
+namespace {
+
+constexpr double kMinDepth = 1e-4;
+
+// The element a surface hit lies on: a short probe along the normal through the hit point.
+long element_at(const SceneMesh& mesh, const Hit& hit, const glm::dvec3& normal,
+                glm::dvec3& bary) {
+    const double d = 1e-4 * mesh.patch_size;
+    return mesh.find(hit.point + d * normal, -normal, d, d + 1e-9, hit.object, bary);
+}
+
+glm::dvec3 interpolate_at(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, long e,
+                          const glm::dvec3& bary, bool front) {
+    const MeshElement& el = mesh.elements[size_t(e)];
+    const uint32_t side = front ? 0 : 1;
+    return bary.x * values[2 * el.v[0] + side] + bary.y * values[2 * el.v[1] + side] +
+           bary.z * values[2 * el.v[2] + side];
+}
+
+class Preview final : public IndirectLight {
+public:
+    Preview(const SceneMesh& mesh, const Solution& sol, const DisplaySettings& s)
+        : mesh_(mesh), sol_(sol), s_(s) {}
+    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
+        glm::dvec3 g;
+        return interpolate(mesh_, sol_.G, hit, normal, g) ? apply_knobs(s_, g) : glm::dvec3(0);
+    }
+
+private:
+    const SceneMesh& mesh_;
+    const Solution& sol_;
+    DisplaySettings s_;
+};
+
+// One irradiance cache record (Ward 1988, without gradients, as POV).
+struct CachePoint {
+    glm::dvec3 position, normal, G;
+    double radius;  // harmonic mean distance, clamped
+};
+
+class Gather final : public IndirectLight, public GatherStats {
+public:
+    Gather(const scene::Scene& scene, const SceneMesh& mesh, const Solution& sol,
+           const Intersector& geometry, const DisplaySettings& s)
+        : scene_(scene), mesh_(mesh), sol_(sol), geometry_(geometry), s_(s) {
+        const double reach = s_.cache_error * s_.max_reuse *
+                             std::max(1.0, glm::length(mesh.bounds.hi - s_.camera));
+        cell_ = std::max(reach / 2, 1e-6);
+    }
+
+    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
+        glm::dvec3 g;
+        if (!lookup(hit.point, normal, g)) g = gather(hit.point, normal);
+        return apply_knobs(s_, g);
+    }
+
+    size_t cache_points() const override {
+        std::shared_lock lock(mutex_);
+        return points_.size();
+    }
+    double gather_seconds() const override { return gather_ns_.load() * 1e-9; }
+
+private:
+    using Cell = std::array<long long, 3>;
+    struct CellHash {
+        size_t operator()(const Cell& c) const {
+            return size_t(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+        }
+    };
+    Cell cell_of(const glm::dvec3& p) const {
+        return {(long long)std::floor(p.x / cell_), (long long)std::floor(p.y / cell_),
+                (long long)std::floor(p.z / cell_)};
+    }
+
+    // Ward's weighted average of the valid records (weight > 1/a).
+    bool lookup(const glm::dvec3& p, const glm::dvec3& n, glm::dvec3& out) const {
+        std::shared_lock lock(mutex_);
+        const auto it = grid_.find(cell_of(p));
+        if (it == grid_.end()) return false;
+        glm::dvec3 sum(0);
+        double wsum = 0;
+        const double limit = 1 / s_.cache_error;
+        for (uint32_t i : it->second) {
+            const CachePoint& c = points_[i];
+            const double nd = glm::dot(n, c.normal);
+            if (nd < 0.9) continue;
+            const glm::dvec3 d = p - c.position;
+            if (std::fabs(glm::dot(d, n)) > 0.1 * c.radius) continue;  // other surface
+            const double e = glm::length(d) / c.radius + std::sqrt(std::max(0.0, 1 - nd));
+            const double w = e > 0 ? 1 / e : 1e30;
+            if (w <= limit) continue;
+            sum += w * c.G;
+            wsum += w;
+        }
+        if (wsum <= 0) return false;
+        out = sum / wsum;
+        return true;
+    }
+
+    glm::dvec3 gather(const glm::dvec3& p, const glm::dvec3& n) const {
+        const auto t0 = std::chrono::steady_clock::now();
+        const int cells = std::max(1, int(std::lround(std::sqrt(double(s_.gather_rays)))));
+        // Deterministic per point, whichever thread gets here first.
+        uint64_t seed = 0x9e3779b97f4a7c15ULL;
+        for (double x : {p.x, p.y, p.z, n.x, n.y, n.z}) seed = seed * 1099511628211ULL ^ std::hash<double>{}(x);
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> U(0.0, 1.0);
+        glm::dvec3 sum(0);
+        double inv_dist = 0;
+        const glm::dvec3 origin = p + n * (1e-5 * mesh_.patch_size);
+        for (int i = 0; i < cells; ++i)
+            for (int j = 0; j < cells; ++j) {
+                const glm::dvec3 dir =
+                    cosine_direction(n, (i + U(rng)) / cells, (j + U(rng)) / cells);
+                sum += radiance(origin, dir, inv_dist);
+            }
+        const int total = cells * cells;
+        CachePoint c;
+        c.position = p;
+        c.normal = n;
+        c.G = sum / double(total);
+        const double camera = glm::length(p - s_.camera);
+        const double harmonic = inv_dist > 0 ? total / inv_dist : 1e30;
+        c.radius = std::clamp(harmonic, s_.min_reuse * camera, s_.max_reuse * camera);
+        insert(c);
+        gather_ns_ += uint64_t(std::chrono::duration<double, std::nano>(
+                                   std::chrono::steady_clock::now() - t0)
+                                   .count());
+        return c.G;
+    }
+
+    // B of the previous bounce where the ray lands; the background where it escapes.
+    glm::dvec3 radiance(const glm::dvec3& origin, const glm::dvec3& dir, double& inv_dist) const {
+        Hit hit;
+        double t_min = kMinDepth;
+        for (int k = 0; k < 64; ++k) {
+            if (!geometry_.intersect(Ray{origin, dir}, t_min,
+                                     std::numeric_limits<double>::infinity(), hit, false))
+                return background_radiance(scene_, dir);
+            if (!hit.no_radiosity) break;
+            t_min = hit.t;
+        }
+        inv_dist += 1 / std::max(hit.t, 1e-9);
+        glm::dvec3 bary;
+        const long e = mesh_.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
+        if (e < 0) return glm::dvec3(0);
+        const bool front = glm::dot(dir, mesh_.elements[size_t(e)].normal) < 0;
+        return interpolate_at(mesh_, sol_.B, e, bary, front);
+    }
+
+    void insert(const CachePoint& c) const {
+        std::unique_lock lock(mutex_);
+        const uint32_t index = uint32_t(points_.size());
+        points_.push_back(c);
+        const double r = c.radius * s_.cache_error;
+        const Cell lo = cell_of(c.position - glm::dvec3(r)), hi = cell_of(c.position + glm::dvec3(r));
+        for (long long x = lo[0]; x <= hi[0]; ++x)
+            for (long long y = lo[1]; y <= hi[1]; ++y)
+                for (long long z = lo[2]; z <= hi[2]; ++z) grid_[{x, y, z}].push_back(index);
+    }
+
+    const scene::Scene& scene_;
+    const SceneMesh& mesh_;
+    const Solution& sol_;
+    const Intersector& geometry_;
+    DisplaySettings s_;
+    double cell_ = 1;
+    mutable std::shared_mutex mutex_;
+    mutable std::vector<CachePoint> points_;
+    mutable std::unordered_map<Cell, std::vector<uint32_t>, CellHash> grid_;
+    mutable std::atomic<uint64_t> gather_ns_{0};
+};
+
+}  // namespace
+
+DisplaySettings display_settings(const scene::Scene& scene, const RadiosityOptions& options) {
+    const scene::RadiositySettings r = scene.globals.radiosity.value_or(scene::RadiositySettings{});
+    DisplaySettings s;
+    s.brightness = r.brightness;
+    s.gray_threshold = std::clamp(r.gray_threshold, 0.0, 1.0);
+    s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, 2 * r.count);
+    s.cache_error = options.cache_error ? *options.cache_error : std::max(0.05, r.error_bound);
+    s.min_reuse = r.minimum_reuse;
+    s.max_reuse = std::max(r.maximum_reuse, r.minimum_reuse);
+    s.camera = scene.camera.location;
+    return s;
+}
+
+glm::dvec3 apply_knobs(const DisplaySettings& s, const glm::dvec3& G) {
+    glm::dvec3 g = G;
+    if (s.gray_threshold > 0) {
+        const double grey = 0.297 * g.x + 0.589 * g.y + 0.114 * g.z;
+        g = s.gray_threshold * glm::dvec3(grey) + (1 - s.gray_threshold) * g;
+    }
+    g *= s.brightness;
+    return std::isfinite(g.x + g.y + g.z) ? g : glm::dvec3(0);
+}
+
+bool interpolate(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, const Hit& hit,
+                 const glm::dvec3& normal, glm::dvec3& out) {
+    glm::dvec3 bary;
+    const long e = element_at(mesh, hit, normal, bary);
+    if (e < 0) return false;
+    out = interpolate_at(mesh, values, e, bary, glm::dot(normal, mesh.elements[size_t(e)].normal) > 0);
+    return true;
+}
+
+std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const Solution& solution,
+                                            const DisplaySettings& settings) {
+    return std::make_unique<Preview>(mesh, solution, settings);
+}
+
+std::unique_ptr<IndirectLight> make_gather(const scene::Scene& scene, const SceneMesh& mesh,
+                                           const Solution& solution,
+                                           const Intersector& geometry,
+                                           const DisplaySettings& settings) {
+    return std::make_unique<Gather>(scene, mesh, solution, geometry, settings);
+}
+
+}  // namespace lumen::render::radiosity

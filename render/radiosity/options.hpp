@@ -1,0 +1,34 @@
+// lumen's radiosity options (INI keys Radiosity_*, README "Radiosity"): how the patch solution
+// is computed and shown. Unset values fall back to the scene's radiosity { } block.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace lumen::render::radiosity {
+
+enum class Method { Auto, Matrix, Jacobi, GaussSeidel, Progressive };
+enum class FormFactorMethod { RayCast, Analytic, Hemicube };
+enum class DisplayMode { Gather, Preview };
+
+struct RadiosityOptions {
+    std::optional<bool> enabled;   // Radiosity=on/off; unset: on when the scene has a block
+    Method method = Method::Auto;  // auto: Jacobi when bounce-limited, else by patch count
+    std::optional<int> bounces;    // unset: the scene's recursion_limit; 0: to convergence
+    double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
+    FormFactorMethod form_factors = FormFactorMethod::RayCast;
+    int ff_rays = 256;             // rays per vertex (ray-cast form factors)
+    int hemicube_res = 128;
+    std::optional<int> gather_rays;     // unset: from the scene's count
+    std::optional<double> cache_error;  // unset: from the scene's error_bound
+    DisplayMode display = DisplayMode::Gather;
+    double tolerance = 1e-4;  // stop of the iterative and progressive solvers (relative)
+    // POV's +RF keys, here meaning the patch solution (not POV's irradiance cache).
+    std::string file;
+    bool from_file = false, to_file = false;
+    bool verbose = false;  // +V: one line per phase on stderr
+};
+
+const char* method_name(Method m);
+const char* form_factor_name(FormFactorMethod m);
+
+}  // namespace lumen::render::radiosity

@@ -1,0 +1,214 @@
+#include "render/radiosity/scene_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+
+#include "render/radiosity/mesher.hpp"
+#include "render/texture_layers.hpp"
+
+namespace lumen::render::radiosity {
+
+namespace {
+
+// A primitive to mesh: its world transform composed through its CSG parents, the texture it
+// inherits, and the original object (the pointer tracer hits carry).
+struct Piece {
+    scene::Object placed;  // copy with the world transform
+    const scene::Object* original;
+    const scene::LayeredTexture* texture;
+};
+
+void collect(const scene::Object& o, const scene::Transform& to_world,
+             const scene::LayeredTexture* inherited, bool hidden, std::vector<Piece>& out,
+             std::vector<std::string>& warnings) {
+    const scene::LayeredTexture* texture = o.texture.empty() ? inherited : &o.texture;
+    hidden = hidden || o.no_radiosity;
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
+        if (csg->op != scene::CsgOp::Union) {
+            if (!hidden)
+                warnings.push_back(o.loc.str() +
+                                   ": warning: radiosity does not mesh this CSG (only unions); "
+                                   "it occludes but gets no indirect light");
+            return;
+        }
+        const scene::Transform world = o.transform.then(to_world);
+        for (const auto& child : csg->children)
+            if (child) collect(*child, world, texture, hidden, out, warnings);
+        return;
+    }
+    if (hidden) return;  // invisible to radiosity: not meshed, skipped by gathers
+    if (!meshable(o)) {
+        warnings.push_back(o.loc.str() +
+                           ": warning: radiosity cannot mesh this shape; it occludes but gets "
+                           "no indirect light");
+        return;
+    }
+    if (!o.clipped_by.empty())
+        warnings.push_back(o.loc.str() +
+                           ": warning: radiosity meshes this object without its clipped_by");
+    Piece p{o, &o, texture};
+    p.placed.transform = o.transform.then(to_world);
+    out.push_back(std::move(p));
+}
+
+// Diffuse reflectance and emission of the top layer at p (POV: diffuse × pigment).
+void material_at(const scene::LayeredTexture* texture, const glm::dvec3& p, glm::dvec3& rho,
+                 glm::dvec3& emission) {
+    ResolvedLayers layers;
+    resolve_layers(texture, p, layers);
+    const ResolvedLayer& top = layers[0];
+    const glm::dvec3 rgb(top.colour.r, top.colour.g, top.colour.b);
+    const double opacity = 1 - top.colour.f - top.colour.t;
+    rho = glm::max(glm::dvec3(0), rgb * top.finish->diffuse * opacity);
+    emission = glm::max(glm::dvec3(0), rgb * top.finish->emission * opacity);
+}
+
+// Vertices are shared by elements of the same texture and plane orientation.
+using WeldKey = std::tuple<long long, long long, long long, int, int, int, const void*>;
+
+class Welder {
+public:
+    Welder(SceneMesh& mesh, double quantum) : mesh_(mesh), q_(quantum) {}
+    uint32_t vertex(const glm::dvec3& p, const glm::dvec3& n, const scene::LayeredTexture* t) {
+        const WeldKey key{std::llround(p.x / q_), std::llround(p.y / q_), std::llround(p.z / q_),
+                          int(std::lround(n.x * 1000)), int(std::lround(n.y * 1000)),
+                          int(std::lround(n.z * 1000)), t};
+        auto [it, inserted] = index_.try_emplace(key, uint32_t(mesh_.vertices.size()));
+        if (inserted) {
+            MeshVertex v;
+            v.position = p;
+            v.normal = n;
+            material_at(t, p, v.rho, v.emission);
+            mesh_.vertices.push_back(v);
+        }
+        return it->second;
+    }
+
+private:
+    SceneMesh& mesh_;
+    double q_;
+    std::map<WeldKey, uint32_t> index_;
+};
+
+void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const Piece& piece) {
+    // Quads and fans become triangles: values interpolate barycentrically.
+    const size_t n = p.vertices.size();
+    for (size_t k = 1; k + 1 < n; ++k) {
+        const glm::dvec3 a = p.vertices[0], b = p.vertices[k], c = p.vertices[k + 1];
+        const glm::dvec3 cr = glm::cross(b - a, c - a);
+        const double len = glm::length(cr);
+        if (!(len > 0)) continue;
+        MeshElement e;
+        e.normal = cr / len;
+        e.area = 0.5 * len;
+        e.object = piece.original;
+        e.v = {welder.vertex(a, p.normal, piece.texture), welder.vertex(b, p.normal, piece.texture),
+               welder.vertex(c, p.normal, piece.texture)};
+        mesh.elements.push_back(e);
+    }
+}
+
+}  // namespace
+
+double default_patch_size(const Aabb& bounds) {
+    if (bounds.empty() || !bounds.finite()) return 1.0;
+    const double diagonal = glm::length(bounds.hi - bounds.lo);
+    return diagonal > 0 ? diagonal / 25 : 1.0;
+}
+
+SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
+    SceneMesh mesh;
+    std::vector<Piece> pieces;
+    for (const auto& o : scene.objects)
+        if (o) collect(*o, scene::Transform{}, nullptr, false, pieces, mesh.warnings);
+
+    // Finite shapes first: their extent bounds the infinite planes.
+    MeshOptions opt;
+    std::vector<std::vector<Patch>> patches(pieces.size());
+    Aabb bounds;
+    const double coarse = 1e30;  // one patch per face: only the extent matters here
+    for (size_t i = 0; i < pieces.size(); ++i) {
+        if (std::holds_alternative<scene::Plane>(pieces[i].placed.shape)) continue;
+        opt.max_edge = coarse;
+        for (const Patch& p : mesh_object(pieces[i].placed, opt, {}))
+            for (const auto& v : p.vertices) bounds.expand(v);
+    }
+    if (bounds.empty()) bounds = {glm::dvec3(-10), glm::dvec3(10)};
+    mesh.bounds = bounds;
+    mesh.patch_size = patch_size > 0 ? patch_size : default_patch_size(bounds);
+    const glm::dvec3 margin = 0.05 * (bounds.hi - bounds.lo) + glm::dvec3(mesh.patch_size);
+    opt.bounds_min = bounds.lo - margin;
+    opt.bounds_max = bounds.hi + margin;
+    opt.max_edge = mesh.patch_size;
+
+    Welder welder(mesh, mesh.patch_size * 1e-6);
+    for (const Piece& piece : pieces)
+        for (const Patch& p : mesh_object(piece.placed, opt, {}))
+            add_patch(mesh, welder, p, piece);
+
+    // Vertex areas and the direction into the adjacent elements (gathers start a hair inside
+    // them, off shared edges and corners).
+    for (const MeshElement& e : mesh.elements) {
+        glm::dvec3 c(0);
+        for (uint32_t v : e.v) c += mesh.vertices[v].position / 3.0;
+        for (uint32_t v : e.v) {
+            mesh.vertices[v].area += e.area / 3;
+            mesh.vertices[v].inward += c - mesh.vertices[v].position;
+        }
+    }
+    for (MeshVertex& v : mesh.vertices) {
+        v.inward -= glm::dot(v.inward, v.normal) * v.normal;
+        const double len = glm::length(v.inward);
+        v.inward = len > 0 ? v.inward / len : glm::dvec3(0);
+    }
+
+    mesh.boxes.reserve(mesh.elements.size());
+    for (const MeshElement& e : mesh.elements) {
+        Aabb b;
+        for (uint32_t v : e.v) b.expand(mesh.vertices[v].position);
+        const glm::dvec3 pad(1e-7 * mesh.patch_size);
+        mesh.boxes.push_back({b.lo - pad, b.hi + pad});
+    }
+    mesh.bvh.build(mesh.boxes);
+    return mesh;
+}
+
+long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
+                     const scene::Object* object, glm::dvec3& bary) const {
+    long best = -1;
+    double best_err = slack;
+    double tmax = t + slack;
+    const SlabRay ray(origin, dir);
+    bvh.traverse(ray, t - slack, tmax, [&](uint32_t pos) {
+        const uint32_t i = bvh.order()[pos];
+        const MeshElement& e = elements[i];
+        if (object && e.object != object) return;
+        const glm::dvec3 a = vertices[e.v[0]].position, b = vertices[e.v[1]].position,
+                         c = vertices[e.v[2]].position;
+        // Möller–Trumbore, both sides, edges included with a small tolerance.
+        const glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(dir, e2);
+        const double det = glm::dot(e1, pv);
+        if (std::fabs(det) < 1e-300) return;
+        const double inv = 1 / det;
+        const glm::dvec3 tv = origin - a;
+        const double u = glm::dot(tv, pv) * inv;
+        const glm::dvec3 qv = glm::cross(tv, e1);
+        const double w = glm::dot(dir, qv) * inv;
+        constexpr double eps = 1e-6;
+        if (u < -eps || w < -eps || u + w > 1 + eps) return;
+        const double th = glm::dot(e2, qv) * inv;
+        const double err = std::fabs(th - t);
+        if (err > best_err) return;
+        best_err = err;
+        best = long(i);
+        const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
+        bary = {1 - uc - wc, uc, wc};
+    });
+    return best;
+}
+
+}  // namespace lumen::render::radiosity

@@ -1,0 +1,59 @@
+// The scene's diffuse surfaces as a welded triangle mesh for the radiosity solution: elements
+// know the primitive they came from (so a tracer hit finds its element) and share vertices
+// with their coplanar neighbours (so values interpolate across element edges). Every
+// surface is two-sided, as in POV: the unknowns are vertex sides (vertex v, side 0 along its
+// normal, side 1 against it).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/bvh.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render::radiosity {
+
+struct MeshVertex {
+    glm::dvec3 position{0};
+    glm::dvec3 normal{0, 0, 1};  // the front (side 0) normal
+    glm::dvec3 inward{0};        // towards the inside of the adjacent elements (unit or 0)
+    glm::dvec3 rho{0};           // diffuse × pigment at the vertex
+    glm::dvec3 emission{0};      // emission × pigment
+    double area = 0;             // a third of the adjacent elements' area
+};
+
+struct MeshElement {
+    std::array<uint32_t, 3> v{};  // vertex indices, counter-clockwise about the normal
+    glm::dvec3 normal{0, 0, 1};
+    double area = 0;
+    const scene::Object* object = nullptr;  // the primitive (as a tracer Hit names it)
+};
+
+struct SceneMesh {
+    std::vector<MeshVertex> vertices;
+    std::vector<MeshElement> elements;
+    Bvh bvh;                      // over elements, in Bvh::order()
+    std::vector<Aabb> boxes;      // element boxes
+    double patch_size = 0;        // largest element edge used
+    Aabb bounds;                  // of the finite objects
+    std::vector<std::string> warnings;  // with source locations
+
+    size_t unknowns() const { return vertices.size() * 2; }
+
+    // The element crossed by the ray near distance t (within `slack`) from `object`, with the
+    // barycentric weights of the crossing point; -1 when none.
+    long find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
+              const scene::Object* object, glm::dvec3& bary) const;
+};
+
+// A patch size from the scene bounds when `requested` is 0 (about 1/25 of the diagonal).
+double default_patch_size(const Aabb& bounds);
+
+// Meshes every meshable object (through unions; other CSG, no_radiosity and unsupported
+// shapes are left out and noted in `warnings`), infinite planes clipped to the bounds.
+SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size);
+
+}  // namespace lumen::render::radiosity

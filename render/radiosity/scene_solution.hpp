@@ -1,0 +1,71 @@
+// The view-independent radiosity solution of a scene (radiosity-notes.md §4.4, §5.1): per
+// vertex side, the radiosity B leaving it after bounce k−1 and the incident indirect light G
+// of bounce k, where k is the bounce count (POV's recursion_limit) or ∞ (converged).
+//   B⁰ = E + ρ(H + G_env),  Gᵏ = F Bᵏ⁻¹ + G_env,  Bᵏ = E + ρ(H + Gᵏ)
+// H is the direct light as POV's radiosity rays see it (area lights as point lights at
+// their centre, spotlight falloff, fade, shadows), F the ray-cast vertex form factors.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/intersector.hpp"
+#include "render/radiosity/options.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render::radiosity {
+
+// Sparse rows of vertex form factors: F[u][col] is the fraction of a cosine-weighted gather
+// from vertex side u that lands on the basis function of `col`; `env` the background light
+// that escaping rays bring back (already divided by the ray count).
+struct VertexFormFactors {
+    std::vector<uint32_t> start;  // row u is [start[u], start[u+1])
+    std::vector<uint32_t> col;
+    std::vector<float> weight;
+    std::vector<glm::dvec3> env;
+
+    size_t rows() const { return env.size(); }
+    glm::dvec3 gather(size_t u, const std::vector<glm::dvec3>& B) const;
+};
+
+struct Solution {
+    std::vector<glm::dvec3> B;  // per unknown: leaving radiosity (bounce k−1)
+    std::vector<glm::dvec3> G;  // per unknown: incident indirect light (bounce k)
+    int bounces = 0;            // k; 0 = converged
+    uint64_t scene_key = 0;     // what the solution was computed for (save/load, animation)
+};
+
+struct SolveInfo {
+    double form_factor_seconds = 0, solve_seconds = 0;
+    int iterations = 0;
+    std::string method;                 // "jacobi", "matrix", ...
+    std::vector<std::string> warnings;  // stability reports
+};
+
+// The background colour radiosity gathers see for an escaping direction.
+glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3& dir);
+
+// Direct light per vertex side (the H above).
+std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh& mesh,
+                                     const Intersector& geometry, int threads);
+
+// Ray-cast vertex form factors with `rays` stratified cosine rays per vertex side.
+VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
+                                      const Intersector& geometry, int rays, int threads);
+
+// The whole solution: direct light, form factors and the solve the options ask for.
+Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
+                     const Intersector& geometry, const RadiosityOptions& options, int threads,
+                     SolveInfo& info);
+
+// The bounce count in effect: the option, else the scene's recursion_limit.
+int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options);
+
+// Runs fn(begin, end) over [0, n) on up to `threads` threads (in chunks).
+void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn);
+
+}  // namespace lumen::render::radiosity

@@ -1,0 +1,69 @@
+#include "render/radiosity/solution_io.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "parser/diagnostics.hpp"
+
+namespace lumen::render::radiosity {
+
+namespace {
+
+constexpr const char* kMagic = "lumen-radiosity-solution";
+constexpr int kVersion = 1;
+
+[[noreturn]] void bad_file(const std::string& path, const std::string& why) {
+    throw LumenError({}, "radiosity solution file '" + path + "': " + why);
+}
+
+}  // namespace
+
+void save_solution(const Solution& s, const std::string& path) {
+    std::ofstream out(path);
+    if (!out) bad_file(path, "cannot be written");
+    out << kMagic << ' ' << kVersion << '\n'
+        << "scene " << s.scene_key << '\n'
+        << "unknowns " << s.B.size() << '\n'
+        << "bounces " << s.bounces << '\n';
+    char buf[160];
+    for (size_t u = 0; u < s.B.size(); ++u) {
+        std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g\n", s.B[u].x,
+                      s.B[u].y, s.B[u].z, s.G[u].x, s.G[u].y, s.G[u].z);
+        out << buf;
+    }
+    out << "end\n";
+    if (!out) bad_file(path, "write failed");
+}
+
+Solution load_solution(const std::string& path, uint64_t scene_key, size_t unknowns) {
+    std::ifstream in(path);
+    if (!in) bad_file(path, "cannot be read");
+    std::string magic, word;
+    int version = 0;
+    Solution s;
+    size_t n = 0;
+    if (!(in >> magic >> version) || magic != kMagic) bad_file(path, "not a lumen radiosity solution");
+    if (version != kVersion) bad_file(path, "version " + std::to_string(version) + " (lumen reads 1)");
+    if (!(in >> word >> s.scene_key) || word != "scene" || !(in >> word >> n) ||
+        word != "unknowns" || !(in >> word >> s.bounces) || word != "bounces")
+        bad_file(path, "malformed header");
+    if (s.scene_key != scene_key)
+        bad_file(path, "made for another scene (only the camera may differ)");
+    if (n != unknowns)
+        bad_file(path, "made for " + std::to_string(n) + " unknowns, this mesh has " +
+                           std::to_string(unknowns) + " (another Radiosity_Patch_Size?)");
+    s.B.resize(n);
+    s.G.resize(n);
+    for (size_t u = 0; u < n; ++u) {
+        auto& b = s.B[u];
+        auto& g = s.G[u];
+        if (!(in >> b.x >> b.y >> b.z >> g.x >> g.y >> g.z)) bad_file(path, "truncated");
+        if (!std::isfinite(b.x + b.y + b.z + g.x + g.y + g.z)) bad_file(path, "non-finite value");
+    }
+    if (!(in >> word) || word != "end") bad_file(path, "truncated");
+    return s;
+}
+
+}  // namespace lumen::render::radiosity
