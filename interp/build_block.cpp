@@ -95,15 +95,40 @@ const BlockValue* block_of(const Item& item, std::string_view keyword) {
     return keyword.empty() || b->keyword == keyword ? b : nullptr;
 }
 
+namespace {
+
+// A pigment/normal block that does not start with a declared one of its kind, kept for
+// edit_pigment()/edit_normal().
+template <class T> std::shared_ptr<const BlockValue> edits_of(const BlockValue& block) {
+    const bool copies = !block.items.empty() && block.items.front().kind == Item::Kind::Value &&
+                        block.items.front().value.is<T>();
+    if (copies) return nullptr;
+    return std::make_shared<const BlockValue>(block);
+}
+
+}  // namespace
+
+scene::PigmentPtr edit_pigment(BuildContext& ctx, const Value& v, const scene::PigmentPtr& current) {
+    if (!v.edits || !current) return v.as<scene::PigmentPtr>();
+    ItemCursor cur(ctx, *v.edits);
+    return build_pigment(cur, current.get());
+}
+
+scene::NormalPtr edit_normal(BuildContext& ctx, const Value& v, const scene::NormalPtr& current) {
+    if (!v.edits || !current) return v.as<scene::NormalPtr>();
+    ItemCursor cur(ctx, *v.edits);
+    return build_normal(cur, current.get());
+}
+
 Value build_block(BuildContext& ctx, const BlockValue& block) {
     const std::string& k = block.keyword;
     SourceLoc loc = block.loc;
     if (contains(kData, k)) return make(block, loc);
     ItemCursor cur(ctx, block);
     if (k == "texture") return make(TextureValue{build_texture(cur)}, loc);
-    if (k == "pigment") return Value{build_pigment(cur), loc};
+    if (k == "pigment") return Value{build_pigment(cur), loc, edits_of<scene::PigmentPtr>(block)};
     if (k == "finish") return Value{build_finish(cur), loc};
-    if (k == "normal") return Value{build_normal(cur), loc};
+    if (k == "normal") return Value{build_normal(cur), loc, edits_of<scene::NormalPtr>(block)};
     if (k == "interior") return make(build_interior(cur), loc);
     if (k == "material") return make(build_material(cur), loc);
     if (k == "camera") return make(build_camera(cur), loc);

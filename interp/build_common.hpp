@@ -48,13 +48,18 @@ std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur);
 std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur);
 
 // ---- materials (build_pigment/texture/finish/normal/interior/material.cpp) -------------------
-scene::PigmentPtr build_pigment(ItemCursor& cur);
+// `base`: the pigment/normal the block edits (see edit_pigment); null = the #default one.
+scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base = nullptr);
 scene::PigmentPtr solid_pigment(const scene::Colour& c, SourceLoc loc);
 scene::FinishPtr build_finish(ItemCursor& cur);
 // `finish { ... }` written where a finish already is (a copied texture, an object's texture):
 // the fields the block wrote replace those of `base`; a declared finish replaces it whole.
 scene::FinishPtr apply_finish(const scene::FinishPtr& base, const scene::FinishPtr& f);
-scene::NormalPtr build_normal(ItemCursor& cur);
+scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base = nullptr);
+// A pigment/normal value `v` written where `current` already is (in a texture, on an object):
+// a block that did not start from a declared one edits a copy of `current`, as POV does.
+scene::PigmentPtr edit_pigment(BuildContext& ctx, const Value& v, const scene::PigmentPtr& current);
+scene::NormalPtr edit_normal(BuildContext& ctx, const Value& v, const scene::NormalPtr& current);
 scene::LayeredTexture build_texture(ItemCursor& cur);
 scene::Interior build_interior(ItemCursor& cur);
 MaterialValue build_material(ItemCursor& cur);

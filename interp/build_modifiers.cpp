@@ -82,7 +82,7 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
         obj.texture.insert(obj.texture.end(), layers.begin(), layers.end());
     } else if (v.is<scene::PigmentPtr>()) {
         change_top_texture(cur, item, obj,
-                           [&](scene::Texture& t) { t.pigment = v.as<scene::PigmentPtr>(); });
+                           [&](scene::Texture& t) { t.pigment = edit_pigment(cur.ctx(), v, t.pigment); });
     } else if (v.is<scene::FinishPtr>()) {
         change_top_texture(cur, item, obj,
                            [&](scene::Texture& t) {
@@ -90,7 +90,7 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
                            });
     } else if (v.is<scene::NormalPtr>()) {
         change_top_texture(cur, item, obj,
-                           [&](scene::Texture& t) { t.normal = v.as<scene::NormalPtr>(); });
+                           [&](scene::Texture& t) { t.normal = edit_normal(cur.ctx(), v, t.normal); });
     } else if (v.is<std::shared_ptr<const scene::Interior>>()) {
         obj.interior = *v.as<std::shared_ptr<const scene::Interior>>();
     } else if (v.is<std::shared_ptr<const MaterialValue>>()) {

@@ -18,9 +18,10 @@ const std::vector<std::string>& normal_keywords() {
 
 }  // namespace
 
-scene::NormalPtr build_normal(ItemCursor& cur) {
+scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
     scene::Normal n;
     if (cur.next_is<scene::NormalPtr>()) n = *cur.next().value.as<scene::NormalPtr>();
+    else if (base) n = *base;
     else if (cur.ctx().default_normal) n = *cur.ctx().default_normal;
     n.loc = cur.block_loc();
     while (!cur.at_end()) {

@@ -51,9 +51,10 @@ scene::PigmentPtr solid_pigment(const scene::Colour& c, SourceLoc loc) {
     return p;
 }
 
-scene::PigmentPtr build_pigment(ItemCursor& cur) {
+scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
     scene::Pigment p;
     if (cur.next_is<scene::PigmentPtr>()) p = *cur.next().value.as<scene::PigmentPtr>();
+    else if (base) p = *base;
     else if (cur.ctx().default_pigment) p = *cur.ctx().default_pigment;
     p.loc = cur.block_loc();
     while (!cur.at_end()) {

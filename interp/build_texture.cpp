@@ -74,6 +74,14 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
             top.finish = apply_finish(top.finish, finish);
             continue;
         }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::PigmentPtr>()) {
+            top.pigment = edit_pigment(cur.ctx(), item.value, top.pigment);
+            continue;
+        }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::NormalPtr>()) {
+            top.normal = edit_normal(cur.ctx(), item.value, top.normal);
+            continue;
+        }
         if (take(cur, item, "pigment", "a pigment", top.pigment) ||
             take(cur, item, "normal", "a normal", top.normal))
             continue;

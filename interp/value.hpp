@@ -69,8 +69,16 @@ struct Value {
         std::shared_ptr<const MacroValue>,                // macro
         std::shared_ptr<const FunctionValue>,             // function / spline (not evaluated)
         scene::Unsupported>;                              // unsupported feature
+    Value() = default;
+    Value(Variant value, SourceLoc where = {}, std::shared_ptr<const BlockValue> edit = nullptr)
+        : v(std::move(value)), loc(where), edits(std::move(edit)) {}
+
     Variant v;
     SourceLoc loc;  // where the value was written
+    // pigment/normal blocks that do not start from an identifier: the flattened block, so
+    // that a parent that already has a pigment/normal can apply it as an edit (POV modifies
+    // the texture's pigment: `texture { T pigment { scale 2 } }` scales T's pigment).
+    std::shared_ptr<const BlockValue> edits;
 
     template <class T> bool is() const { return std::holds_alternative<T>(v); }
     template <class T> const T& as() const { return std::get<T>(v); }
