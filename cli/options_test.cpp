@@ -210,12 +210,12 @@ TEST(IniOptions, RadiosityKeys) {
     const Options d = parse({"s.pov"});
     EXPECT_FALSE(d.radiosity.enabled.has_value());
     EXPECT_EQ(d.radiosity.method, Method::Auto);
-    EXPECT_EQ(d.radiosity.display, DisplayMode::Gather);
+    EXPECT_EQ(d.radiosity.display, DisplayMode::Preview);
     const Options o = parse({"s.pov", "Radiosity=off", "radiosity_method=Gauss_Seidel",
                              "Radiosity_Bounces=0", "Radiosity_Patch_Size=2.5",
                              "Radiosity_Form_Factors=hemicube", "Radiosity_FF_Rays=64",
                              "Radiosity_Hemicube_Res=32", "Radiosity_Gather_Rays=100",
-                             "Radiosity_Cache_Error=0.2", "Radiosity_Display=preview",
+                             "Radiosity_Cache_Error=0.2", "Radiosity_Display=gather",
                              "Radiosity_Tolerance=1e-3", "+RFsol.rad", "+RFI", "+RFO", "+R4"});
     EXPECT_EQ(o.radiosity.enabled, false);
     EXPECT_EQ(o.radiosity.method, Method::GaussSeidel);
@@ -226,7 +226,7 @@ TEST(IniOptions, RadiosityKeys) {
     EXPECT_EQ(o.radiosity.hemicube_res, 32);
     EXPECT_EQ(o.radiosity.gather_rays, 100);
     EXPECT_DOUBLE_EQ(*o.radiosity.cache_error, 0.2);
-    EXPECT_EQ(o.radiosity.display, DisplayMode::Preview);
+    EXPECT_EQ(o.radiosity.display, DisplayMode::Gather);
     EXPECT_DOUBLE_EQ(o.radiosity.tolerance, 1e-3);
     EXPECT_EQ(o.radiosity.file, "sol.rad");
     EXPECT_TRUE(o.radiosity.from_file);

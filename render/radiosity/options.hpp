@@ -16,11 +16,11 @@ struct RadiosityOptions {
     std::optional<int> bounces;    // unset: the scene's recursion_limit; 0: to convergence
     double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
     FormFactorMethod form_factors = FormFactorMethod::RayCast;
-    int ff_rays = 256;             // rays per vertex (ray-cast form factors)
+    int ff_rays = 512;             // rays per vertex side (ray-cast form factors)
     int hemicube_res = 128;
     std::optional<int> gather_rays;     // unset: from the scene's count
     std::optional<double> cache_error;  // unset: from the scene's error_bound
-    DisplayMode display = DisplayMode::Gather;
+    DisplayMode display = DisplayMode::Preview;  // gather needs a small cache error: slower
     double tolerance = 1e-4;  // stop of the iterative and progressive solvers (relative)
     // POV's +RF keys, here meaning the patch solution (not POV's irradiance cache).
     std::string file;

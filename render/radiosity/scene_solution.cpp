@@ -234,6 +234,24 @@ void check_reflectance(const SceneMesh& mesh, std::vector<std::string>& warnings
     }
 }
 
+// One pass of neighbour averaging over the vertices sharing an element (same side): the
+// indirect term is smooth away from contacts, and this cuts the per-vertex ray noise.
+std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dvec3>& G) {
+    std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
+    std::vector<double> weight(G.size(), 0.0);
+    for (const MeshElement& e : mesh.elements)
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                for (uint32_t side = 0; side < 2; ++side) {
+                    const double w = a == b ? 1.0 : 0.5;  // a vertex is in several elements
+                    sum[2 * e.v[a] + side] += w * G[2 * e.v[b] + side];
+                    weight[2 * e.v[a] + side] += w;
+                }
+    std::vector<glm::dvec3> out(G.size());
+    for (size_t u = 0; u < G.size(); ++u) out[u] = weight[u] > 0 ? sum[u] / weight[u] : G[u];
+    return out;
+}
+
 }  // namespace
 
 Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
@@ -311,7 +329,7 @@ Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
     }
     for (glm::dvec3& b : B)
         if (!std::isfinite(b.x + b.y + b.z)) b = glm::dvec3(0);  // never a NaN in a pixel
-    sol.G = gather_all(B);
+    sol.G = smooth(mesh, gather_all(B));
     sol.B = std::move(B);
     info.solve_seconds = seconds_since(t0);
     return sol;
