@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# Usage: bench/render_vs_povray.sh [LUMEN] [THREADS]
-# Renders each examples/*.pov at 800x600 +A0.3 with lumen and with POV-Ray (same +WT thread
-# count, default: all cores) and prints wall and CPU (user+sys) seconds and the wall ratio.
-# On a busy machine the CPU times are the steadier figures.
+# Usage: bench/render_vs_povray.sh [LUMEN] [THREADS] [REPEATS] [SCENE...]
+# Renders each examples/*.pov (or the SCENEs given) at 800x600 +A0.3 with lumen and with
+# POV-Ray (same +WT thread count, default: all cores), REPEATS times each (default 3, the two
+# renderers alternating), and prints per scene the median wall and CPU (user+sys) seconds of
+# each and the ratio of the median walls lumen/POV-Ray; the last line gives the worst and the
+# geometric-mean ratio. On a busy machine the CPU times are the steadier figures.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 lumen=$(realpath "${1:-$root/build/lumen}")
 threads=${2:-$(nproc)}
+repeats=${3:-3}
+shift $(( $# < 3 ? $# : 3 ))
+scenes=("$@")
+[ ${#scenes[@]} -eq 0 ] && scenes=("$root"/examples/*.pov)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 opts=(+W800 +H600 +A0.3 +AM1 +R3 -J "+WT$threads")
@@ -19,11 +25,27 @@ measure() {  # prints "wall cpu" for a command run in $work
     echo "$wall $(echo "$user + $sys" | bc -l)"
 }
 
+median() { printf '%s\n' "$@" | sort -g | awk '{v[NR]=$1} END {print (NR%2) ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2}'; }
+
 printf '%-16s %9s %9s %9s %9s %7s\n' scene "lumen s" "lumen cpu" "povray s" "pov cpu" ratio
-for scene in "$root"/examples/*.pov; do
+worst=0 log_sum=0 count=0
+for scene in "${scenes[@]}"; do
+    scene=$(realpath "$scene")
     name=$(basename "$scene" .pov)
     dir=$(dirname "$scene")
-    read -r lw lc < <(measure "$lumen" "$scene" "${opts[@]}" "+L$dir" "+O$work/$name-lumen.png") || continue
-    read -r pw pc < <(measure povray -D -V +FN "${opts[@]}" "+L$dir" "+I$scene" "+O$work/$name-pov.png") || continue
-    printf '%-16s %9.2f %9.2f %9.2f %9.2f %7.2f\n' "$name" "$lw" "$lc" "$pw" "$pc" "$(echo "$lw / $pw" | bc -l)"
+    lw=() lc=() pw=() pc=()
+    for ((i = 0; i < repeats; ++i)); do
+        read -r w c < <(measure "$lumen" "$scene" "${opts[@]}" "+L$dir" "+O$work/$name-lumen.png") || continue 2
+        lw+=("$w") lc+=("$c")
+        read -r w c < <(measure povray -D -V +FN "${opts[@]}" "+L$dir" "+I$scene" "+O$work/$name-pov.png") || continue 2
+        pw+=("$w") pc+=("$c")
+    done
+    mlw=$(median "${lw[@]}") mlc=$(median "${lc[@]}") mpw=$(median "${pw[@]}") mpc=$(median "${pc[@]}")
+    ratio=$(echo "$mlw / $mpw" | bc -l)
+    printf '%-16s %9.2f %9.2f %9.2f %9.2f %7.2f\n' "$name" "$mlw" "$mlc" "$mpw" "$mpc" "$ratio"
+    worst=$(echo "if ($ratio > $worst) $ratio else $worst" | bc -l)
+    log_sum=$(echo "$log_sum + l($ratio)" | bc -l)
+    count=$((count + 1))
 done
+[ "$count" -gt 0 ] && printf 'wall ratio lumen/povray over %d scenes (median of %d runs): worst %.2f, geometric mean %.2f\n' \
+    "$count" "$repeats" "$worst" "$(echo "e($log_sum / $count)" | bc -l)"

@@ -1,15 +1,15 @@
-// Output encoding (povray-semantics.md §2) and file writing through OpenImageIO.
+// Output encoding (povray-semantics.md §2), then the file through image_files.hpp.
 #include "render/image_output.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
-
 #include "parser/diagnostics.hpp"
+#include "render/image_files.hpp"
 
 namespace lumen::render {
 namespace {
@@ -59,17 +59,6 @@ double quantise(float encoded, int maxval) {
     return std::floor(c * maxval + 0.5);
 }
 
-const char* format_name(FileType type) {
-    switch (type) {
-        case FileType::PNG: return "png";
-        case FileType::EXR: return "openexr";
-        case FileType::HDR: return "hdr";
-        case FileType::TIFF: return "tiff";
-        case FileType::PPM: return "pnm";
-    }
-    return "png";
-}
-
 const char* extension(FileType type) {
     switch (type) {
         case FileType::PNG: return ".png";
@@ -83,16 +72,24 @@ const char* extension(FileType type) {
 
 bool is_float_format(FileType type) { return type == FileType::EXR || type == FileType::HDR; }
 
-// Pixels in the layout OIIO is asked to write: float for HDR formats (linear light),
-// quantised integers (as floats holding exact integer levels) otherwise.
-std::vector<float> prepare_pixels(const Image& image, const Encoding& e, const OutputOptions& o,
-                                  int channels, int maxval) {
+// Float formats get linear light; integer formats the quantised levels 0..maxval.
+EncodedImage prepare_pixels(const Image& image, const Encoding& e, const OutputOptions& o,
+                            int channels, int maxval) {
     const bool floating = is_float_format(o.type);
-    std::vector<float> out(size_t(image.width) * image.height * channels);
+    EncodedImage out;
+    out.width = image.width;
+    out.height = image.height;
+    out.channels = channels;
+    out.maxval = floating ? 0 : maxval;
+    out.curve = e.identity ? EncodedImage::Curve::Unlabelled
+                : e.file_gamma <= 0 ? EncodedImage::Curve::SRGB
+                                    : EncodedImage::Curve::Power;
+    out.file_gamma = e.file_gamma;
+    out.values.resize(size_t(image.width) * image.height * channels);
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             const float* p = image.at(x, y);
-            float* q = &out[(size_t(y) * image.width + x) * channels];
+            float* q = &out.values[(size_t(y) * image.width + x) * channels];
             const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
             for (int c = 0; c < 3; ++c) {
                 float v = p[c];
@@ -101,9 +98,9 @@ std::vector<float> prepare_pixels(const Image& image, const Encoding& e, const O
                 if (floating)
                     q[c] = e.identity ? v : to_linear(v, e);
                 else
-                    q[c] = float(quantise(encode(v, e), maxval) / maxval);
+                    q[c] = float(quantise(encode(v, e), maxval));
             }
-            if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval) / maxval);
+            if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval));
         }
     }
     return out;
@@ -118,44 +115,30 @@ int encode_8bit(double v, const scene::Scene& scene, const OutputOptions& option
 void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
                  const std::string& path) {
     namespace fs = std::filesystem;
-    using OIIO::ImageOutput;
-    using OIIO::ImageSpec;
-    using OIIO::TypeDesc;
 
     const Encoding e = encoding_for(scene, options);
     const int channels = options.alpha ? 4 : 3;
-    const bool floating = is_float_format(options.type);
-    const bool sixteen = !floating && options.bits > 8 &&
+    const bool sixteen = !is_float_format(options.type) && options.bits > 8 &&
                          (options.type == FileType::PNG || options.type == FileType::TIFF ||
                           options.type == FileType::PPM);
-    const int maxval = sixteen ? 65535 : 255;
-    const TypeDesc stored = floating ? (options.type == FileType::HDR ? TypeDesc::FLOAT
-                                                                       : TypeDesc::HALF)
-                                     : (sixteen ? TypeDesc::UINT16 : TypeDesc::UINT8);
-
-    ImageSpec spec(image.width, image.height, channels, stored);
-    if (!floating) {
-        spec.attribute("oiio:ColorSpace", e.identity ? "" : "sRGB");
-        spec.attribute("oiio:Gamma", 2.2f);
-    }
-    spec.attribute("Software", "lumen " LUMEN_VERSION);
+    const EncodedImage pixels = prepare_pixels(image, e, options, channels, sixteen ? 65535 : 255);
 
     const fs::path target(path);
     fs::path tmp = target;
     tmp.replace_filename("." + target.filename().string() + ".lumen-tmp" + extension(options.type));
 
-    auto out = ImageOutput::create(format_name(options.type));
-    if (!out) throw LumenError({}, "cannot create a writer for '" + path + "'");
-    if (!out->open(tmp.string(), spec))
-        throw LumenError({}, "cannot write '" + path + "': " + out->geterror());
-    const std::vector<float> pixels = prepare_pixels(image, e, options, channels, maxval);
-    const bool ok = out->write_image(TypeDesc::FLOAT, pixels.data());
-    const std::string err = ok ? "" : out->geterror();
-    out->close();
-    if (!ok) {
+    try {
+        switch (options.type) {
+            case FileType::PNG: write_png(pixels, tmp.string()); break;
+            case FileType::PPM: write_ppm(pixels, tmp.string()); break;
+            case FileType::EXR: write_with_oiio(pixels, "openexr", tmp.string()); break;
+            case FileType::HDR: write_with_oiio(pixels, "hdr", tmp.string()); break;
+            case FileType::TIFF: write_with_oiio(pixels, "tiff", tmp.string()); break;
+        }
+    } catch (const std::runtime_error& failure) {
         std::error_code ec;
         fs::remove(tmp, ec);
-        throw LumenError({}, "cannot write '" + path + "': " + err);
+        throw LumenError({}, "cannot write '" + path + "': " + failure.what());
     }
     std::error_code ec;
     fs::rename(tmp, target, ec);

@@ -1,4 +1,4 @@
-// Encoding (gamma rules of povray-semantics.md §2) and writing images with OpenImageIO.
+// Encoding (gamma rules of povray-semantics.md §2) and writing image files (image_files.hpp).
 #pragma once
 #include <string>
 

@@ -107,6 +107,64 @@ TEST(ImageOutput, SixteenBitPngAndExr) {
     std::filesystem::remove_all(dir);
 }
 
+std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(ImageOutput, SixteenBitPpmIsBigEndianWithMaxval65535) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_ppm16";
+    std::filesystem::create_directories(dir);
+    OutputOptions o;
+    o.type = FileType::PPM;
+    o.bits = 16;
+    write_image(gradient_image(), legacy(), o, (dir / "t.ppm").string());
+    const std::string b = file_bytes(dir / "t.ppm");
+    const std::string header = "P6\n4 2\n65535\n";
+    ASSERT_EQ(b.size(), header.size() + 4 * 2 * 3 * 2);
+    EXPECT_EQ(b.substr(0, header.size()), header);
+    const auto sample = [&](size_t i) {
+        return unsigned(uint8_t(b[header.size() + 2 * i])) * 256 +
+               uint8_t(b[header.size() + 2 * i + 1]);
+    };
+    EXPECT_EQ(sample(3), 21845u);  // pixel 1 red: floor(1/3 · 65535 + 0.5)
+    EXPECT_EQ(sample(12 + 1), 65535u);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ImageOutput, PngColourChunksFollowTheEncoding) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_chunks";
+    std::filesystem::create_directories(dir);
+    const auto chunks_of = [&](const scene::Scene& s, double file_gamma) {
+        OutputOptions o;
+        o.file_gamma = file_gamma;
+        write_image(gradient_image(), s, o, (dir / "t.png").string());
+        const std::string b = file_bytes(dir / "t.png");
+        return std::string(b.find("sRGB") != std::string::npos ? "sRGB " : "") +
+               (b.find("gAMA") != std::string::npos ? "gAMA" : "");
+    };
+    EXPECT_EQ(chunks_of(v37(), -1), "sRGB gAMA");  // sRGB curve (with the matching gAMA)
+    EXPECT_EQ(chunks_of(v37(), 1.0), "gAMA");      // a power law
+    EXPECT_EQ(chunks_of(legacy(), -1), "");        // legacy: the bytes are the working values
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ImageOutput, TiffThroughTheOiioModule) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_tiff";
+    std::filesystem::create_directories(dir);
+    OutputOptions o;
+    o.type = FileType::TIFF;
+    const std::string tif = (dir / "t.tif").string();
+    write_image(gradient_image(), legacy(), o, tif);
+    auto in = OIIO::ImageInput::open(tif);
+    ASSERT_TRUE(in);
+    std::vector<unsigned char> px(4 * 2 * 3);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+    EXPECT_EQ(px[3], 85);
+    EXPECT_EQ(px[12 + 1], 255);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(ImageOutput, UnwritableFolderIsAnError) {
     OutputOptions o;
     EXPECT_THROW(write_image(gradient_image(), legacy(), o, "/nonexistent-folder/x.png"),

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    tao-pegtl-dev libglm-dev libopenimageio-dev openimageio-tools libgtest-dev
+    tao-pegtl-dev libglm-dev libpng-dev libopenimageio-dev openimageio-tools libgtest-dev
     cmake g++ make pkg-config
     povray povray-includes povray-examples
     clang libclang-rt-14-dev
