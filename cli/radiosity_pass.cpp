@@ -1,6 +1,11 @@
 #include "cli/radiosity_pass.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
+
+#include "render/camera.hpp"
 
 #include "interp/dump_scene.hpp"
 #include "render/radiosity/solution_io.hpp"
@@ -48,7 +53,10 @@ uint64_t scene_key(const scene::Scene& scene) {
 
 const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
                                                     const rad::RadiosityOptions& options,
-                                                    int threads, std::vector<std::string>& log) {
+                                                    const render::RenderOptions& render,
+                                                    std::vector<std::string>& log) {
+    const int threads = render.threads > 0 ? render.threads
+                                           : int(std::max(1u, std::thread::hardware_concurrency()));
     display_.reset();
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
@@ -79,10 +87,21 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
     bounces_ = rad::effective_bounces(scene, options);
 
     const rad::DisplaySettings ds = rad::display_settings(scene, options);
-    if (options.display == rad::DisplayMode::Preview)
-        display_ = rad::make_preview(*mesh_, *solution_, ds);
-    else
+    if (options.display == rad::DisplayMode::Preview) {
+        // The view-dependent part: a many-ray final gather at the vertices the camera sees
+        // (the rest keep the solution's G, for reflections).
+        const auto t0 = std::chrono::steady_clock::now();
+        const render::CameraModel camera(scene.camera, render.width, render.height);
+        const std::vector<char> seen =
+            rad::visible_sides(*mesh_, *intersector_, camera, render.width, render.height);
+        gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
+        shown_ = rad::final_gather(scene, *mesh_, *intersector_, solution_->B, seen,
+                                   ds.gather_rays, threads, solution_->G);
+        gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        display_ = rad::make_preview(*mesh_, shown_, ds);
+    } else {
         display_ = rad::make_gather(scene, *mesh_, *solution_, *intersector_, ds);
+    }
     return display_.get();
 }
 
@@ -103,7 +122,8 @@ std::string RadiosityPass::summary() const {
         line += ", gather " + seconds(g->gather_seconds()) + " (" +
                 std::to_string(g->cache_points()) + " cache points)";
     else
-        line += ", preview";
+        line += ", gather " + seconds(gather_seconds_) + " (" + std::to_string(gathered_) +
+                " vertices)";
     return line;
 }
 

@@ -12,6 +12,7 @@
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/scene_solution.hpp"
+#include "render/render.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::cli {
@@ -29,7 +30,8 @@ public:
     // and mesh match. `log` receives warnings and the +V line.
     const render::IndirectLight* prepare(const scene::Scene& scene,
                                          const render::radiosity::RadiosityOptions& options,
-                                         int threads, std::vector<std::string>& log);
+                                         const render::RenderOptions& render,
+                                         std::vector<std::string>& log);
 
     // The +V line, once the frame is rendered (gather figures included).
     std::string summary() const;
@@ -44,6 +46,9 @@ private:
     std::unique_ptr<render::Intersector> intersector_;
     std::unique_ptr<render::radiosity::SceneMesh> mesh_;
     std::optional<render::radiosity::Solution> solution_;
+    std::vector<glm::dvec3> shown_;  // G after the final gather for this view
+    size_t gathered_ = 0;            // vertex sides gathered for this view
+    double gather_seconds_ = 0;
     std::unique_ptr<render::IndirectLight> display_;
     render::radiosity::SolveInfo info_;
     render::radiosity::RadiosityOptions options_;

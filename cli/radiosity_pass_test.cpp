@@ -36,6 +36,14 @@ render::radiosity::RadiosityOptions small() {
     return o;
 }
 
+render::RenderOptions view() {
+    render::RenderOptions r;
+    r.width = 40;
+    r.height = 30;
+    r.threads = 2;
+    return r;
+}
+
 TEST(RadiosityPass, SwitchForcesOnOrOff) {
     SourceManager sources;
     scene::Scene s = parse(sources, room(-5, 0.8, "assumed_gamma 1"));
@@ -50,7 +58,7 @@ TEST(RadiosityPass, SwitchForcesOnOrOff) {
     EXPECT_FALSE(s.globals.radiosity);
     RadiosityPass pass;
     std::vector<std::string> log;
-    EXPECT_EQ(pass.prepare(s, o, 1, log), nullptr);  // nothing is meshed
+    EXPECT_EQ(pass.prepare(s, o, view(), log), nullptr);  // nothing is meshed
 }
 
 TEST(RadiosityPass, ReusesTheSolutionWhenOnlyTheCameraMoves) {
@@ -58,17 +66,17 @@ TEST(RadiosityPass, ReusesTheSolutionWhenOnlyTheCameraMoves) {
     RadiosityPass pass;
     std::vector<std::string> log;
     const scene::Scene a = parse(sources, room(-5));
-    ASSERT_NE(pass.prepare(a, small(), 2, log), nullptr);
+    ASSERT_NE(pass.prepare(a, small(), view(), log), nullptr);
     EXPECT_FALSE(pass.reused());
     const auto first = pass.solution()->G;
     const scene::Scene b = parse(sources, room(-6));  // camera moved
     EXPECT_EQ(scene_key(a), scene_key(b));
-    ASSERT_NE(pass.prepare(b, small(), 2, log), nullptr);
+    ASSERT_NE(pass.prepare(b, small(), view(), log), nullptr);
     EXPECT_TRUE(pass.reused());
     EXPECT_EQ(pass.solution()->G, first);
     const scene::Scene c = parse(sources, room(-6, 0.5));  // the floor changed
     EXPECT_NE(scene_key(b), scene_key(c));
-    ASSERT_NE(pass.prepare(c, small(), 2, log), nullptr);
+    ASSERT_NE(pass.prepare(c, small(), view(), log), nullptr);
     EXPECT_FALSE(pass.reused());
 }
 
@@ -77,7 +85,7 @@ TEST(RadiosityPass, CeilingGetsOnlyIndirectLightAndNoNaN) {
     RadiosityPass pass;
     std::vector<std::string> log;
     const scene::Scene s = parse(sources, room(-5));
-    const render::IndirectLight* light = pass.prepare(s, small(), 2, log);
+    const render::IndirectLight* light = pass.prepare(s, small(), view(), log);
     ASSERT_NE(light, nullptr);
     double ceiling = 0, floor = 0;
     for (const glm::dvec3& g : pass.solution()->G) {
@@ -106,7 +114,7 @@ TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     const auto path = (std::filesystem::temp_directory_path() / "lumen_radiosity_test.sol").string();
     o.file = path;
     o.to_file = true;
-    ASSERT_NE(pass.prepare(s, o, 2, log), nullptr);
+    ASSERT_NE(pass.prepare(s, o, view(), log), nullptr);
     const auto saved = *pass.solution();
     const auto loaded = render::radiosity::load_solution(path, scene_key(s), saved.B.size());
     ASSERT_EQ(loaded.B.size(), saved.B.size());
@@ -122,7 +130,7 @@ TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     RadiosityPass again;
     o.to_file = false;
     o.from_file = true;
-    ASSERT_NE(again.prepare(s, o, 2, log), nullptr);
+    ASSERT_NE(again.prepare(s, o, view(), log), nullptr);
     EXPECT_EQ(again.solution()->G, saved.G);
     std::filesystem::remove(path);
 }
@@ -132,7 +140,7 @@ TEST(RadiosityPass, ReflectanceAtLeastOneIsReported) {
     RadiosityPass pass;
     std::vector<std::string> log;
     const scene::Scene s = parse(sources, room(-5, 1.2));
-    ASSERT_NE(pass.prepare(s, small(), 2, log), nullptr);
+    ASSERT_NE(pass.prepare(s, small(), view(), log), nullptr);
     bool reported = false;
     for (const std::string& l : log) reported |= l.find("reflectance >= 1") != std::string::npos;
     EXPECT_TRUE(reported);

@@ -46,9 +46,7 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     const auto start = Clock::now();
     render::RenderOptions options = effective_render_options(o);
     std::vector<std::string> log;
-    options.indirect = radiosity.prepare(scene, o.radiosity, options.threads > 0 ? options.threads
-                                                                                 : int(std::thread::hardware_concurrency()),
-                                         log);
+    options.indirect = radiosity.prepare(scene, o.radiosity, options, log);
     for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
     ProgressBar bar(terminal, label);
     const render::Image image = render::render(scene, options, &stats,

@@ -39,16 +39,16 @@ glm::dvec3 interpolate_at(const SceneMesh& mesh, const std::vector<glm::dvec3>& 
 
 class Preview final : public IndirectLight {
 public:
-    Preview(const SceneMesh& mesh, const Solution& sol, const DisplaySettings& s)
-        : mesh_(mesh), sol_(sol), s_(s) {}
+    Preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G, const DisplaySettings& s)
+        : mesh_(mesh), G_(G), s_(s) {}
     glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
         glm::dvec3 g;
-        return interpolate(mesh_, sol_.G, hit, normal, g) ? apply_knobs(s_, g) : glm::dvec3(0);
+        return interpolate(mesh_, G_, hit, normal, g) ? apply_knobs(s_, g) : glm::dvec3(0);
     }
 
 private:
     const SceneMesh& mesh_;
-    const Solution& sol_;
+    const std::vector<glm::dvec3>& G_;
     DisplaySettings s_;
 };
 
@@ -198,7 +198,7 @@ DisplaySettings display_settings(const scene::Scene& scene, const RadiosityOptio
     DisplaySettings s;
     s.brightness = r.brightness;
     s.gray_threshold = std::clamp(r.gray_threshold, 0.0, 1.0);
-    s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, 2 * r.count);
+    s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, 3 * r.count);
     s.cache_error = options.cache_error ? *options.cache_error : std::max(0.05, r.error_bound);
     s.min_reuse = r.minimum_reuse;
     s.max_reuse = std::max(r.maximum_reuse, r.minimum_reuse);
@@ -225,9 +225,9 @@ bool interpolate(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, c
     return true;
 }
 
-std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const Solution& solution,
+std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G,
                                             const DisplaySettings& settings) {
-    return std::make_unique<Preview>(mesh, solution, settings);
+    return std::make_unique<Preview>(mesh, G, settings);
 }
 
 std::unique_ptr<IndirectLight> make_gather(const scene::Scene& scene, const SceneMesh& mesh,

@@ -41,7 +41,8 @@ public:
     virtual double gather_seconds() const = 0;  // summed over threads
 };
 
-std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const Solution& solution,
+// `G` per vertex side (e.g. final_gather's), interpolated over the element hit.
+std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G,
                                             const DisplaySettings& settings);
 
 // `geometry`, `mesh`, `solution` and `scene` must outlive the result.

@@ -16,9 +16,9 @@ struct RadiosityOptions {
     std::optional<int> bounces;    // unset: the scene's recursion_limit; 0: to convergence
     double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
     FormFactorMethod form_factors = FormFactorMethod::RayCast;
-    int ff_rays = 512;             // rays per vertex side (ray-cast form factors)
+    int ff_rays = 64;              // rays per vertex side for the form factors of the solve
     int hemicube_res = 128;
-    std::optional<int> gather_rays;     // unset: from the scene's count
+    std::optional<int> gather_rays;     // final gather rays; unset: from the scene's count
     std::optional<double> cache_error;  // unset: from the scene's error_bound
     DisplayMode display = DisplayMode::Preview;  // gather needs a small cache error: slower
     double tolerance = 1e-4;  // stop of the iterative and progressive solvers (relative)

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "parser/diagnostics.hpp"
+#include "render/camera.hpp"
 #include "render/lights.hpp"
 #include "render/radiosity/ray_cast.hpp"
 #include "render/radiosity/solver.hpp"
@@ -125,46 +126,60 @@ std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh&
     return H;
 }
 
+namespace {
+
+// Casts `rays` stratified cosine-weighted rays from a vertex side (deterministic per side):
+// on_hit(unknown, weight) for each vertex of the element a ray lands on (barycentric share
+// of 1/rays), on_miss(direction) for rays that escape.
+template <class OnHit, class OnMiss>
+void cast_gather(const SceneMesh& mesh, const Intersector& geometry, size_t u, int rays,
+                 OnHit&& on_hit, OnMiss&& on_miss) {
+    const MeshVertex& mv = mesh.vertices[u / 2];
+    const glm::dvec3 origin = gather_origin(mesh, mv);
+    const glm::dvec3 n_side = side_normal(mv, u % 2);
+    const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
+    const double w = 1.0 / (cells * cells);
+    std::mt19937_64 rng(0x9e3779b97f4a7c15ULL * (u + 1));
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j) {
+            const glm::dvec3 dir =
+                cosine_direction(n_side, (i + U(rng)) / cells, (j + U(rng)) / cells);
+            Hit hit;
+            if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
+                on_miss(dir, w);
+                continue;
+            }
+            glm::dvec3 bary;
+            const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
+            if (e < 0) continue;  // an object without elements: absorbs
+            const MeshElement& el = mesh.elements[size_t(e)];
+            const uint32_t hit_side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
+            for (int k = 0; k < 3; ++k)
+                if (bary[k] > 0) on_hit(2 * el.v[k] + hit_side, w * bary[k]);
+        }
+}
+
+}  // namespace
+
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry, int rays, int threads) {
     const size_t n = mesh.unknowns();
     std::vector<std::vector<std::pair<uint32_t, float>>> rows(n);
     VertexFormFactors F;
     F.env.assign(n, glm::dvec3(0));
-    const int side_cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
-    const int total = side_cells * side_cells;
-    const double w = 1.0 / total;
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
         std::vector<std::pair<uint32_t, float>> entries;
         for (size_t v = begin; v < end; ++v) {
-            const MeshVertex& mv = mesh.vertices[v];
-            if (!needs_light(mv)) continue;  // ρ = 0: G is never used
-            const glm::dvec3 origin = gather_origin(mesh, mv);
-            for (size_t side = 0; side < 2; ++side) {
-                const size_t u = 2 * v + side;
-                const glm::dvec3 n_side = side_normal(mv, side);
-                std::mt19937_64 rng(0x9e3779b97f4a7c15ULL * (u + 1));
-                std::uniform_real_distribution<double> U(0.0, 1.0);
+            if (!needs_light(mesh.vertices[v])) continue;  // ρ = 0: G is never used
+            for (size_t u = 2 * v; u < 2 * v + 2; ++u) {
                 entries.clear();
-                for (int i = 0; i < side_cells; ++i)
-                    for (int j = 0; j < side_cells; ++j) {
-                        const glm::dvec3 dir = cosine_direction(
-                            n_side, (i + U(rng)) / side_cells, (j + U(rng)) / side_cells);
-                        Hit hit;
-                        if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
-                            F.env[u] += w * background_radiance(scene, dir);
-                            continue;
-                        }
-                        glm::dvec3 bary;
-                        const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t,
-                                                 hit.object, bary);
-                        if (e < 0) continue;  // an object without elements: absorbs
-                        const MeshElement& el = mesh.elements[size_t(e)];
-                        const uint32_t hit_side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
-                        for (int k = 0; k < 3; ++k)
-                            if (bary[k] > 0)
-                                entries.emplace_back(2 * el.v[k] + hit_side, float(w * bary[k]));
-                    }
+                cast_gather(
+                    mesh, geometry, u, rays,
+                    [&](uint32_t col, double w) { entries.emplace_back(col, float(w)); },
+                    [&](const glm::dvec3& dir, double w) {
+                        F.env[u] += w * background_radiance(scene, dir);
+                    });
                 std::sort(entries.begin(), entries.end());
                 auto& row = rows[u];
                 for (const auto& [c, x] : entries) {
@@ -184,6 +199,45 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
         F.start.push_back(uint32_t(F.col.size()));
     }
     return F;
+}
+
+std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
+                                const CameraModel& camera, int width, int height) {
+    std::vector<char> seen(mesh.unknowns(), 0);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Ray ray = camera.ray(x, y);
+            Hit hit;
+            if (!geometry.intersect(ray, kMinDepth, std::numeric_limits<double>::infinity(), hit,
+                                    false))
+                continue;
+            glm::dvec3 bary;
+            const long e = mesh.find(ray.origin, ray.dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
+            if (e < 0) continue;
+            const MeshElement& el = mesh.elements[size_t(e)];
+            const uint32_t side = glm::dot(ray.dir, el.normal) < 0 ? 0 : 1;
+            for (uint32_t v : el.v) seen[2 * v + side] = 1;
+        }
+    return seen;
+}
+
+std::vector<glm::dvec3> final_gather(const scene::Scene& scene, const SceneMesh& mesh,
+                                     const Intersector& geometry,
+                                     const std::vector<glm::dvec3>& B,
+                                     const std::vector<char>& wanted, int rays, int threads,
+                                     const std::vector<glm::dvec3>& fallback) {
+    std::vector<glm::dvec3> G = fallback;
+    parallel_for(mesh.unknowns(), threads, [&](size_t begin, size_t end) {
+        for (size_t u = begin; u < end; ++u) {
+            if (!wanted[u] || !needs_light(mesh.vertices[u / 2])) continue;
+            glm::dvec3 g(0);
+            cast_gather(
+                mesh, geometry, u, rays, [&](uint32_t col, double w) { g += w * B[col]; },
+                [&](const glm::dvec3& dir, double w) { g += w * background_radiance(scene, dir); });
+            G[u] = g;
+        }
+    });
+    return smooth(mesh, G);
 }
 
 namespace {
@@ -234,6 +288,8 @@ void check_reflectance(const SceneMesh& mesh, std::vector<std::string>& warnings
     }
 }
 
+}  // namespace
+
 // One pass of neighbour averaging over the vertices sharing an element (same side): the
 // indirect term is smooth away from contacts, and this cuts the per-vertex ray noise.
 std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dvec3>& G) {
@@ -251,8 +307,6 @@ std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dve
     for (size_t u = 0; u < G.size(); ++u) out[u] = weight[u] > 0 ? sum[u] / weight[u] : G[u];
     return out;
 }
-
-}  // namespace
 
 Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const RadiosityOptions& options, int threads,
@@ -329,7 +383,7 @@ Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
     }
     for (glm::dvec3& b : B)
         if (!std::isfinite(b.x + b.y + b.z)) b = glm::dvec3(0);  // never a NaN in a pixel
-    sol.G = smooth(mesh, gather_all(B));
+    sol.G = gather_all(B);
     sol.B = std::move(B);
     info.solve_seconds = seconds_since(t0);
     return sol;

@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "render/camera.hpp"
 #include "render/intersector.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
@@ -56,6 +57,22 @@ std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh&
 // Ray-cast vertex form factors with `rays` stratified cosine rays per vertex side.
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry, int rays, int threads);
+
+// Which vertex sides the camera sees (one primary ray per pixel).
+std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
+                                const CameraModel& camera, int width, int height);
+
+// The final gather at the `wanted` vertex sides: G = F B + G_env with `rays` rays each (F is
+// not stored); the others keep `fallback`. Smoothed once over each vertex's neighbours (the
+// indirect term is smooth away from contacts; this cuts the per-vertex ray noise).
+std::vector<glm::dvec3> final_gather(const scene::Scene& scene, const SceneMesh& mesh,
+                                     const Intersector& geometry,
+                                     const std::vector<glm::dvec3>& B,
+                                     const std::vector<char>& wanted, int rays, int threads,
+                                     const std::vector<glm::dvec3>& fallback);
+
+// One pass of neighbour averaging over the vertices that share an element (same side).
+std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dvec3>& G);
 
 // The whole solution: direct light, form factors and the solve the options ask for.
 Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
