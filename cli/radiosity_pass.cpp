@@ -68,6 +68,11 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         log.push_back(scene.sky_sphere->loc.str() +
                       ": warning: radiosity sees the background colour, not the sky_sphere");
 
+    if (options.form_factors != rad::FormFactorMethod::RayCast)
+        log.push_back(std::string("warning: Radiosity_Form_Factors=") +
+                      rad::form_factor_name(options.form_factors) +
+                      " is not available for scene meshes yet (only in the radiosity library); "
+                      "using raycast");
     const uint64_t key = scene_key(scene);
     const size_t unknowns = mesh_->unknowns();
     reused_ = loaded_ = false;
@@ -114,7 +119,7 @@ std::string RadiosityPass::summary() const {
         line += "solution reused (only the camera changed)";
     } else {
         line += "form factors " + seconds(info_.form_factor_seconds) + " (" +
-                rad::form_factor_name(options_.form_factors) + " " +
+                "raycast " +
                 std::to_string(options_.ff_rays) + " rays), solve " + seconds(info_.solve_seconds) +
                 " (" + info_.method + " " + std::to_string(info_.iterations) + ")";
     }

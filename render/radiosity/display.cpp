@@ -198,7 +198,7 @@ DisplaySettings display_settings(const scene::Scene& scene, const RadiosityOptio
     DisplaySettings s;
     s.brightness = r.brightness;
     s.gray_threshold = std::clamp(r.gray_threshold, 0.0, 1.0);
-    s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, 3 * r.count);
+    s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, r.count * 13 / 10);
     s.cache_error = options.cache_error ? *options.cache_error : std::max(0.05, r.error_bound);
     s.min_reuse = r.minimum_reuse;
     s.max_reuse = std::max(r.maximum_reuse, r.minimum_reuse);

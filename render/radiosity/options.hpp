@@ -16,7 +16,7 @@ struct RadiosityOptions {
     std::optional<int> bounces;    // unset: the scene's recursion_limit; 0: to convergence
     double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
     FormFactorMethod form_factors = FormFactorMethod::RayCast;
-    int ff_rays = 64;              // rays per vertex side for the form factors of the solve
+    int ff_rays = 16;              // rays per vertex side for the form factors of the solve
     int hemicube_res = 128;
     std::optional<int> gather_rays;     // final gather rays; unset: from the scene's count
     std::optional<double> cache_error;  // unset: from the scene's error_bound

@@ -117,7 +117,7 @@ void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const Piece& pie
 double default_patch_size(const Aabb& bounds) {
     if (bounds.empty() || !bounds.finite()) return 1.0;
     const double diagonal = glm::length(bounds.hi - bounds.lo);
-    return diagonal > 0 ? diagonal / 25 : 1.0;
+    return diagonal > 0 ? diagonal / 38 : 1.0;
 }
 
 SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
@@ -174,6 +174,17 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
         mesh.boxes.push_back({b.lo - pad, b.hi + pad});
     }
     mesh.bvh.build(mesh.boxes);
+    for (uint32_t i = 0; i < mesh.elements.size(); ++i) {
+        auto [it, inserted] = mesh.object_slot.try_emplace(mesh.elements[i].object,
+                                                           uint32_t(mesh.per_object.size()));
+        if (inserted) mesh.per_object.emplace_back();
+        mesh.per_object[it->second].elements.push_back(i);
+    }
+    for (SceneMesh::ObjectElements& o : mesh.per_object) {
+        std::vector<Aabb> boxes;
+        for (uint32_t i : o.elements) boxes.push_back(mesh.boxes[i]);
+        o.bvh.build(boxes);
+    }
     return mesh;
 }
 
@@ -183,8 +194,17 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
     double best_err = slack;
     double tmax = t + slack;
     const SlabRay ray(origin, dir);
-    bvh.traverse(ray, t - slack, tmax, [&](uint32_t pos) {
-        const uint32_t i = bvh.order()[pos];
+    const Bvh* tree = &bvh;
+    const std::vector<uint32_t>* ids = nullptr;  // null: positions index `elements`
+    if (object) {
+        const auto slot = object_slot.find(object);
+        if (slot == object_slot.end()) return -1;
+        tree = &per_object[slot->second].bvh;
+        ids = &per_object[slot->second].elements;
+    }
+    tree->traverse(ray, t - slack, tmax, [&](uint32_t pos) {
+        const uint32_t k = tree->order()[pos];
+        const uint32_t i = ids ? (*ids)[k] : k;
         const MeshElement& e = elements[i];
         if (object && e.object != object) return;
         const glm::dvec3 a = vertices[e.v[0]].position, b = vertices[e.v[1]].position,
