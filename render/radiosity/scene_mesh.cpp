@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "render/radiosity/mesher.hpp"
@@ -112,6 +113,40 @@ void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const Piece& pie
     }
 }
 
+glm::ivec3 cell_of(const SceneMesh& m, const glm::dvec3& p) {
+    return glm::clamp(glm::ivec3(glm::floor((p - m.grid_origin) / m.grid_cell)), glm::ivec3(0),
+                      m.grid_size - 1);
+}
+
+size_t cell_index(const SceneMesh& m, const glm::ivec3& c) {
+    return (size_t(c.z) * m.grid_size.y + c.y) * m.grid_size.x + c.x;
+}
+
+void build_grid(SceneMesh& m) {
+    Aabb all;
+    for (const Aabb& b : m.boxes) all.expand(b);
+    if (all.empty()) return;
+    const glm::dvec3 extent = all.hi - all.lo;
+    // About one patch per cell, at most 128 cells along an axis.
+    m.grid_cell = std::max({m.patch_size, extent.x / 128, extent.y / 128, extent.z / 128, 1e-9});
+    m.grid_origin = all.lo;
+    m.grid_size = glm::max(glm::ivec3(1), glm::ivec3(glm::ceil(extent / m.grid_cell)));
+    const size_t cells = size_t(m.grid_size.x) * m.grid_size.y * m.grid_size.z;
+    std::vector<uint32_t> count(cells + 1, 0);
+    auto each_cell = [&](const Aabb& b, auto&& fn) {
+        const glm::ivec3 lo = cell_of(m, b.lo), hi = cell_of(m, b.hi);
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) fn(cell_index(m, {x, y, z}));
+    };
+    for (const Aabb& b : m.boxes) each_cell(b, [&](size_t c) { ++count[c + 1]; });
+    for (size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
+    m.cell_start = count;
+    m.cell_items.resize(count[cells]);
+    for (uint32_t i = 0; i < m.boxes.size(); ++i)
+        each_cell(m.boxes[i], [&](size_t c) { m.cell_items[count[c]++] = i; });
+}
+
 }  // namespace
 
 double default_patch_size(const Aabb& bounds) {
@@ -180,6 +215,7 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
         if (inserted) mesh.per_object.emplace_back();
         mesh.per_object[it->second].elements.push_back(i);
     }
+    build_grid(mesh);
     for (SceneMesh::ObjectElements& o : mesh.per_object) {
         std::vector<Aabb> boxes;
         for (uint32_t i : o.elements) boxes.push_back(mesh.boxes[i]);
@@ -190,6 +226,31 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
 
 long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
                      const scene::Object* object, glm::dvec3& bary) const {
+    // Fast path: the elements listed in the grid cell of the hit point.
+    if (object && !cell_start.empty()) {
+        const glm::dvec3 p = origin + t * dir;
+        const size_t c = cell_index(*this, cell_of(*this, p));
+        for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+            const MeshElement& e = elements[cell_items[k]];
+            if (e.object != object) continue;
+            const glm::dvec3 a = vertices[e.v[0]].position;
+            const double h = glm::dot(p - a, e.normal);
+            if (std::fabs(h) > slack) continue;
+            const glm::dvec3 q = p - h * e.normal;
+            const glm::dvec3 e1 = vertices[e.v[1]].position - a, e2 = vertices[e.v[2]].position - a;
+            const glm::dvec3 r = q - a;
+            const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+            const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2);
+            const double det = d11 * d22 - d12 * d12;
+            if (!(det > 0)) continue;
+            const double u = (d22 * r1 - d12 * r2) / det, w = (d11 * r2 - d12 * r1) / det;
+            constexpr double eps = 1e-6;
+            if (u < -eps || w < -eps || u + w > 1 + eps) continue;
+            const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
+            bary = {1 - uc - wc, uc, wc};
+            return long(cell_items[k]);
+        }
+    }
     long best = -1;
     double best_err = slack;
     double tmax = t + slack;

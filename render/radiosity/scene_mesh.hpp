@@ -46,6 +46,13 @@ struct SceneMesh {
     };
     std::vector<ObjectElements> per_object;
     std::unordered_map<const scene::Object*, uint32_t> object_slot;
+    // A uniform grid (cells of about one patch) listing the elements whose box meets each
+    // cell: a hit point finds its element in O(1) (CSR: cell c holds cell_items[cell_start[c]
+    // .. cell_start[c+1]]).
+    glm::dvec3 grid_origin{0};
+    double grid_cell = 1;
+    glm::ivec3 grid_size{0};
+    std::vector<uint32_t> cell_start, cell_items;
     double patch_size = 0;        // largest element edge used
     Aabb bounds;                  // of the finite objects
     std::vector<std::string> warnings;  // with source locations
