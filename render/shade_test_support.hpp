@@ -164,6 +164,7 @@ inline Image8 render8(const scene::Scene& s, int w, int h, RenderOptions opts = 
     TestIntersector geometry(s);
     TraceOptions to;
     to.quality = opts.quality;
+    to.indirect = opts.indirect;
     Tracer tracer(s, geometry, to);
     CameraModel camera(s.camera, w, h);
     opts.width = w;

@@ -54,6 +54,43 @@ void expect_matches(const scene::Scene& s, const std::string& reference, int max
     EXPECT_GE(c.psnr, 45.0) << reference;
 }
 
+// Stands in for the radiosity solution: the same incident light everywhere.
+class ConstantIndirect final : public IndirectLight {
+public:
+    explicit ConstantIndirect(double g) : g_(g) {}
+    glm::dvec3 incident(const Hit&, const glm::dvec3&, ThreadState&) const override {
+        return glm::dvec3(g_);
+    }
+
+private:
+    double g_;
+};
+
+TEST(Tracer, IndirectLightTakesAmbientsPlaceScaledByDiffuseAndPigment) {
+    // Radiosity (3.7): ambient is dropped and diffuse × pigment × G added, so G = 0.5 with
+    // diffuse 0.6 looks exactly like ambient 0.3 without radiosity.
+    Material m{rgb(0.8, 0.4, 1.0)};
+    m.finish.diffuse = 0.6;
+    m.finish.ambient = glm::dvec3(0.3);
+    scene::Scene plain = scene_37();
+    plain.camera.location = {0, 0, -5};
+    plain.objects.push_back(sphere({0, 0, 0}, 1, m));
+    scene::Scene rad = plain;
+    rad.globals.radiosity = scene::RadiositySettings{};
+    const ConstantIndirect half(0.5), none(0.0);
+    RenderOptions with;
+    with.indirect = &half;
+    RenderOptions without;
+    without.indirect = &none;
+    const Image8 a = render8(plain, 16, 12), b = render8(rad, 16, 12, with),
+                 c = render8(rad, 16, 12, without);
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_GT(a.at(8, 6, ch), 0);
+        EXPECT_EQ(b.at(8, 6, ch), a.at(8, 6, ch)) << ch;
+        EXPECT_EQ(c.at(8, 6, ch), 0) << ch;  // ambient 0.3 is gone under radiosity
+    }
+}
+
 TEST(Tracer, DiffuseSphereCentreEncodesLikePovRay) {
     // V1: linear 0.1 + 0.6·N·L ≈ 0.7 at the centre pixel.
     EXPECT_EQ(render8(v1_scene(true), 64, 48).at(32, 24, 0), 218);
