@@ -228,28 +228,8 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
                      const scene::Object* object, glm::dvec3& bary) const {
     // Fast path: the elements listed in the grid cell of the hit point.
     if (object && !cell_start.empty()) {
-        const glm::dvec3 p = origin + t * dir;
-        const size_t c = cell_index(*this, cell_of(*this, p));
-        for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-            const MeshElement& e = elements[cell_items[k]];
-            if (e.object != object) continue;
-            const glm::dvec3 a = vertices[e.v[0]].position;
-            const double h = glm::dot(p - a, e.normal);
-            if (std::fabs(h) > slack) continue;
-            const glm::dvec3 q = p - h * e.normal;
-            const glm::dvec3 e1 = vertices[e.v[1]].position - a, e2 = vertices[e.v[2]].position - a;
-            const glm::dvec3 r = q - a;
-            const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-            const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2);
-            const double det = d11 * d22 - d12 * d12;
-            if (!(det > 0)) continue;
-            const double u = (d22 * r1 - d12 * r2) / det, w = (d11 * r2 - d12 * r1) / det;
-            constexpr double eps = 1e-6;
-            if (u < -eps || w < -eps || u + w > 1 + eps) continue;
-            const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
-            bary = {1 - uc - wc, uc, wc};
-            return long(cell_items[k]);
-        }
+        const long e = find_near(origin + t * dir, object, slack, bary);
+        if (e >= 0) return e;
     }
     long best = -1;
     double best_err = slack;
@@ -289,6 +269,38 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
         const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
         bary = {1 - uc - wc, uc, wc};
     });
+    // Curved surfaces: the true hit lies up to a facet's sagitta off its element.
+    if (best < 0 && object && !cell_start.empty())
+        best = find_near(origin + t * dir, object, 0.5 * patch_size, bary);
+    return best;
+}
+
+long SceneMesh::find_near(const glm::dvec3& p, const scene::Object* object, double slack,
+                          glm::dvec3& bary) const {
+    long best = -1;
+    double best_h = slack;
+    const size_t c = cell_index(*this, cell_of(*this, p));
+    for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+        const MeshElement& e = elements[cell_items[k]];
+        if (e.object != object) continue;
+        const glm::dvec3 a = vertices[e.v[0]].position;
+        const double h = std::fabs(glm::dot(p - a, e.normal));
+        if (h > best_h) continue;
+        const glm::dvec3 r = p - a - glm::dot(p - a, e.normal) * e.normal;
+        const glm::dvec3 e1 = vertices[e.v[1]].position - a, e2 = vertices[e.v[2]].position - a;
+        const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
+        const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2);
+        const double det = d11 * d22 - d12 * d12;
+        if (!(det > 0)) continue;
+        const double u = (d22 * r1 - d12 * r2) / det, w = (d11 * r2 - d12 * r1) / det;
+        constexpr double eps = 1e-6;
+        if (u < -eps || w < -eps || u + w > 1 + eps) continue;
+        const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
+        bary = {1 - uc - wc, uc, wc};
+        best = long(cell_items[k]);
+        best_h = h;
+        if (h == 0) break;
+    }
     return best;
 }
 

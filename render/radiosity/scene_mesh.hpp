@@ -63,6 +63,11 @@ struct SceneMesh {
     // barycentric weights of the crossing point; -1 when none.
     long find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
               const scene::Object* object, glm::dvec3& bary) const;
+
+    // The element of `object` nearest to surface point p (within `slack` of its plane) whose
+    // projection contains p, from the grid cell of p; -1 when none.
+    long find_near(const glm::dvec3& p, const scene::Object* object, double slack,
+                   glm::dvec3& bary) const;
 };
 
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).
