@@ -5,7 +5,7 @@ JOBS ?= 2
 FUZZ_SECONDS ?= 600
 WERROR := $(if $(filter true,$(CI)),ON,OFF)
 
-.PHONY: all deps configure build render test fuzz bench clean
+.PHONY: all deps configure build render test fuzz bench bench-radiosity clean
 
 all: build
 
@@ -36,6 +36,14 @@ bench: configure
 	cmake --build $(BUILD) --target lumen parse_includes -j$(JOBS)
 	$(BUILD)/bench/parse_includes
 	bench/render_vs_povray.sh $(BUILD)/lumen
+
+# Radiosity error against time (about 15 minutes; writes docs/radiosity_*.csv and .png).
+# QUICK=1: a few points, written to $(BUILD)/radiosity-bench instead.
+bench-radiosity: configure
+	@tools/install-deps.sh --bench
+	cmake --build $(BUILD) --target lumen radiosity_sweep_library -j$(JOBS)
+	bench/radiosity_sweep.sh $(if $(QUICK),--quick --out $(BUILD)/radiosity-bench) \
+	    --lumen $(BUILD)/lumen --library $(BUILD)/bench/radiosity_sweep_library
 
 clean:
 	rm -rf $(BUILD) $(FUZZ_BUILD)

@@ -64,7 +64,8 @@ record() {  # renderer method params image wall cpu
     printf '%-8s %-22s %-44s %8.2f s %8.2f cpu  mae %s\n' "$1" "$2" "$3" "$5" "$6" "$mae" >&2
 }
 
-# POV-Ray: count / error_bound / pretrace_end; "shipped" is the file as it is.
+# POV-Ray: count / error_bound / pretrace_end; these are the file's own values.
+shipped="count 200 error_bound 0.5 pretrace_end 0.01"
 pov_run() {  # count error_bound pretrace_end
     local name=pov_$1_$2_$3 wall cpu
     sed -e "s/count 200/count $1/" -e "s/error_bound 0.5/error_bound $2/" \
@@ -72,9 +73,7 @@ pov_run() {  # count error_bound pretrace_end
     grep -q "count $1" "$work/$name.pov" && grep -q "error_bound $2" "$work/$name.pov"
     read -r wall cpu < <(measure povray -D -GA "+WT$threads" "${size[@]}" +FN \
         "+I$work/$name.pov" "+O$work/$name.png")
-    local method=povray
-    [ "$1 $2 $3" = "200 0.5 0.01" ] && method=povray-shipped
-    record povray "$method" "count $1 error_bound $2 pretrace_end $3" "$work/$name.png" "$wall" "$cpu"
+    record povray POV-Ray "count $1 error_bound $2 pretrace_end $3" "$work/$name.png" "$wall" "$cpu"
 }
 
 # lumen: one render per option set; the method label is the chart series.
@@ -87,8 +86,29 @@ lumen_run() {  # method options...
     record lumen "$method" "$*" "$work/$name.png" "$wall" "$cpu"
 }
 
+# lumen over its methods (README "Radiosity"): mesh size, form factors and their rays or
+# resolution, solver, gather rays, and the preview display. The series name says what varies.
+lumen_sweep() {
+    local p r m
+    local sizes=(16 8 4) rays=(64 256 1024) res=(32 64 128) gathers=(32 128 512)
+    [ $quick = 1 ] && sizes=(8) rays=(256) res=(64) gathers=(128)
+    for p in "${sizes[@]}"; do lumen_run "lumen patch size" Radiosity_Patch_Size=$p; done
+    for p in "${sizes[@]}"; do
+        lumen_run "lumen preview" Radiosity_Display=preview Radiosity_Patch_Size=$p
+    done
+    for m in matrix jacobi gauss_seidel progressive; do
+        lumen_run "lumen solver" Radiosity_Method=$m
+    done
+    for r in "${rays[@]}"; do lumen_run "lumen raycast rays" Radiosity_FF_Rays=$r; done
+    for r in "${res[@]}"; do
+        lumen_run "lumen hemicube" Radiosity_Form_Factors=hemicube Radiosity_Hemicube_Res=$r
+    done
+    lumen_run "lumen analytic" Radiosity_Form_Factors=analytic
+    for r in "${gathers[@]}"; do lumen_run "lumen gather rays" Radiosity_Gather_Rays=$r; done
+}
+
 # Error against time, log-log, one series per distinct value of the method column.
-plot() {  # csv png title method-column x-column y-column xlabel ylabel
+plot() {  # csv png title method-column x-column y-column xlabel ylabel [extra plot clause]
     local methods
     methods=$(awk -F, -v c="$4" 'NR > 1 && !/^(#|n,)/ {print $c}' "$1" | awk '!seen[$0]++' |
               sed 's/.*/"&"/' | tr '\n' ' ')
@@ -104,7 +124,7 @@ set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key outside right top
 methods = '$methods'
 plot for [i=1:words(methods)] "$1" using (strcol($4) eq word(methods, i) ? \$$5 : NaN):$6 \
-    with linespoints pt 7 ps 0.8 title word(methods, i)
+    with linespoints pt 7 ps 0.8 title word(methods, i)${9:+, $9}
 EOF
     echo "wrote $2" >&2
 }
@@ -121,8 +141,6 @@ image_sweep() {
     fi
     for s in "${pov_settings[@]}"; do pov_run $s; done
     if [ -x "$lumen" ] && "$lumen" --help 2>&1 | grep -qi radiosity_method; then
-        # shellcheck source=radiosity_sweep_lumen.sh
-        . "$root/bench/radiosity_sweep_lumen.sh"
         lumen_sweep
     else
         echo "lumen at $lumen has no Radiosity_Method option: POV-Ray points only" >&2
@@ -131,7 +149,8 @@ image_sweep() {
     echo "wrote $csv" >&2
     plot "$csv" "$out/radiosity_error_vs_time.png" \
         "cornell.pov 300x300: error against converged POV-Ray, $threads threads" \
-        2 4 6 "wall time (s)" "mean absolute error (8-bit values, 0..1)"
+        2 4 6 "wall time (s)" "mean absolute error (8-bit values, 0..1)" \
+        "\"$csv\" using (strcol(3) eq \"$shipped\" ? \$4 : NaN):6 with points pt 6 ps 2.5 lc rgb \"black\" title \"POV-Ray as shipped\""
 }
 
 library_sweep() {
@@ -141,7 +160,7 @@ library_sweep() {
     echo "wrote $lib_csv" >&2
     plot "$lib_csv" "$out/radiosity_solver_sweep.png" \
         "cornell.pov geometry, patch level (1 thread): points along a series = finer meshes" \
-        3 9 11 "form factors + solve time (s)" "relative L1 error of B against the fine-mesh reference"
+        3 9 11 "form factors + solve CPU time (s)" "relative L1 error of B against the fine-mesh reference"
 }
 
 [ $images = 1 ] && image_sweep

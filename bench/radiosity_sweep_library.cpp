@@ -5,14 +5,14 @@
 // The scene file is parsed unchanged; its triangles become patches through the mesher and
 // the light panel box is the emitter (E = its ambient x pigment), as in the classic Cornell
 // box (POV-Ray's own radiosity instead lights the box from its light_sources). Everything runs
-// on one thread; occlusion queries go through the renderer's BVH over the patches.
+// on one thread (times are CPU seconds); occlusion queries go through the renderer's BVH over the patches.
 //
 // Usage: radiosity_sweep_library [--quick] [scene.pov] > sweep.csv   (progress on stderr)
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -31,12 +31,14 @@ namespace rad = lumen::render::radiosity;
 using lumen::render::Aabb;
 using lumen::render::Bvh;
 using lumen::render::SlabRay;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
-double seconds_since(Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
+// CPU seconds of this (single-threaded) process: steadier than wall time on a shared machine.
+double cpu_now() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 // ---- Scene -> patches -------------------------------------------------------------------
@@ -235,14 +237,14 @@ struct Run {
 // bounces).
 Run run(const std::vector<rad::Patch>& patches, const Method& m) {
     Run r;
-    auto t0 = Clock::now();
+    double t0 = cpu_now();
     auto F = bounded_form_factors(patches, m);
-    r.ff_s = seconds_since(t0);
+    r.ff_s = cpu_now() - t0;
     const auto s = rad::make_system(patches, std::move(F));
     double e_max = 0;
     for (const auto& e : s.emission) e_max = std::max({e_max, e.x, e.y, e.z});
     auto solver = make_solver(m.solver);
-    t0 = Clock::now();
+    t0 = cpu_now();
     rad::SolveOptions opt;
     opt.tolerance = m.tolerance * e_max;
     if (m.solver == "jacobi3") {
@@ -255,7 +257,7 @@ Run run(const std::vector<rad::Patch>& patches, const Method& m) {
         if (report.status != rad::SolveStatus::Converged)
             throw std::runtime_error(m.ff + " " + m.solver + ": " + report.message);
     }
-    r.solve_s = seconds_since(t0);
+    r.solve_s = cpu_now() - t0;
     r.B = solver->display();
     return r;
 }
@@ -337,7 +339,7 @@ int sweep(int argc, char** argv) {
                     ref_edge, ref.patches.size(), ref_method.param, ref_run.ff_s,
                     relative_l1(ref, check.B, ref, ref_run.B));
     }
-    std::printf("n,max_edge,method,form_factors,ff_param,solver,ff_s,solve_s,total_s,iterations,"
+    std::printf("n,max_edge,method,form_factors,ff_param,solver,ff_cpu_s,solve_cpu_s,total_cpu_s,iterations,"
                 "rel_l1\n");
     auto report = [&](const SceneMesh& mesh, double edge, const Method& m) {
         const Run r = run(mesh.patches, m);

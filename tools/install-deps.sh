@@ -10,6 +10,8 @@ packages=(
     clang libclang-rt-14-dev
     bc  # bench/render_vs_povray.sh arithmetic
 )
+# Optional: `--bench` adds what the benchmark charts need (make bench-radiosity).
+if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox); fi
 
 missing=()
 for p in "${packages[@]}"; do
