@@ -8,9 +8,10 @@
 # time (log-log) with gnuplot. With a library sweep program it also runs the patch-level sweep
 # (mesh x form factors x solver) and draws that chart.
 #
-# Usage: bench/radiosity_sweep.sh [--quick] [--no-images] [--lumen PATH] [--library PATH] [--out DIR]
+# Usage: bench/radiosity_sweep.sh [--quick] [--no-images] [--plot-only] [--lumen PATH] [--library PATH] [--out DIR]
 #   --quick     a few points of each kind (about a minute)
 #   --no-images only the library sweep
+#   --plot-only redraw the charts from the CSVs already in --out
 #   --lumen     the lumen binary (default build/lumen); skipped when it has no radiosity options
 #   --library   build/bench/radiosity_sweep_library, for docs/radiosity_solver_sweep.*
 #   --out       where the CSVs and charts go (default docs/)
@@ -20,6 +21,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 quick=0
 images=1
+plot_only=0
 lumen=$root/build/lumen
 library=
 out=$root/docs
@@ -27,14 +29,17 @@ while [ $# -gt 0 ]; do
     case $1 in
         --quick) quick=1 ;;
         --no-images) images=0 ;;
+        --plot-only) plot_only=1 ;;
         --lumen) lumen=$2; shift ;;
         --library) library=$2; shift ;;
         --out) out=$2; shift ;;
-        *) echo "usage: $0 [--quick] [--no-images] [--lumen PATH] [--library PATH] [--out DIR]" >&2
+        *) echo "usage: $0 [--quick] [--no-images] [--plot-only] [--lumen PATH] [--library PATH] [--out DIR]" >&2
            exit 2 ;;
     esac
     shift
 done
+lumen=$(realpath -m "$lumen")  # the renders run in a temporary folder
+[ -n "$library" ] && library=$(realpath "$library")
 scene=/usr/share/povray-3.7/scenes/radiosity/cornell.pov
 ref=$root/tests/data/cornell_pov_converged_300.png
 command -v gnuplot >/dev/null || { echo "gnuplot missing: tools/install-deps.sh --bench" >&2; exit 1; }
@@ -86,34 +91,55 @@ lumen_run() {  # method options...
     record lumen "$method" "$*" "$work/$name.png" "$wall" "$cpu"
 }
 
-# lumen over its methods (README "Radiosity"): mesh size, form factors and their rays or
-# resolution, solver, gather rays, and the preview display. The series name says what varies.
+# lumen over its methods (README "Radiosity"): mesh size with the preview and the gather
+# display, the gather's cache error and rays, the solver, and the form-factor rays. The series
+# name says what varies. (The renderer computes form factors by ray casting whatever
+# Radiosity_Form_Factors says; the library sweep compares the methods.)
 lumen_sweep() {
-    local p r m
-    local sizes=(16 8 4) rays=(64 256 1024) res=(32 64 128) gathers=(32 128 512)
-    [ $quick = 1 ] && sizes=(8) rays=(256) res=(64) gathers=(128)
-    for p in "${sizes[@]}"; do lumen_run "lumen patch size" Radiosity_Patch_Size=$p; done
-    for p in "${sizes[@]}"; do
-        lumen_run "lumen preview" Radiosity_Display=preview Radiosity_Patch_Size=$p
+    local v
+    local sizes=(16 8 4 2 1.5) gather_sizes=(8 4 2) errors=(0.3 0.2 0.1) gathers=(50 200 800)
+    local solvers=(jacobi matrix gauss_seidel progressive) rays=(32 128 1024)
+    if [ $quick = 1 ]; then
+        sizes=(8) gather_sizes=(4) errors=() gathers=() solvers=(matrix) rays=(64)
+    fi
+    for v in "${sizes[@]}"; do
+        lumen_run "lumen preview: patch size" Radiosity_Display=preview Radiosity_Patch_Size=$v
     done
-    for m in matrix jacobi gauss_seidel progressive; do
-        lumen_run "lumen solver" Radiosity_Method=$m
+    for v in "${gather_sizes[@]}"; do lumen_run "lumen gather: patch size" Radiosity_Patch_Size=$v; done
+    for v in "${errors[@]}"; do
+        lumen_run "lumen gather: cache error" Radiosity_Patch_Size=2 Radiosity_Cache_Error=$v
     done
-    for r in "${rays[@]}"; do lumen_run "lumen raycast rays" Radiosity_FF_Rays=$r; done
-    for r in "${res[@]}"; do
-        lumen_run "lumen hemicube" Radiosity_Form_Factors=hemicube Radiosity_Hemicube_Res=$r
+    for v in "${gathers[@]}"; do
+        lumen_run "lumen gather: rays" Radiosity_Patch_Size=4 Radiosity_Cache_Error=0.2 \
+            Radiosity_Gather_Rays=$v
     done
-    lumen_run "lumen analytic" Radiosity_Form_Factors=analytic
-    for r in "${gathers[@]}"; do lumen_run "lumen gather rays" Radiosity_Gather_Rays=$r; done
+    # jacobi stops after the scene's recursion_limit bounces as POV does; the others converge.
+    for v in "${solvers[@]}"; do
+        lumen_run "lumen preview: solver" Radiosity_Display=preview Radiosity_Patch_Size=8 \
+            Radiosity_Method=$v
+    done
+    for v in "${rays[@]}"; do
+        lumen_run "lumen preview: FF rays" Radiosity_Display=preview Radiosity_Patch_Size=8 \
+            Radiosity_FF_Rays=$v
+    done
 }
 
-# Error against time, log-log, one series per distinct value of the method column.
+# Error against time, log-log, one series per distinct value of the method column (each
+# series sorted by time into its own file, so its points join up).
 plot() {  # csv png title method-column x-column y-column xlabel ylabel [extra plot clause]
-    local methods
-    methods=$(awk -F, -v c="$4" 'NR > 1 && !/^(#|n,)/ {print $c}' "$1" | awk '!seen[$0]++' |
-              sed 's/.*/"&"/' | tr '\n' ' ')
+    local methods=() m i=0 clauses=()
+    mapfile -t methods < <(awk -F, -v c="$4" 'NR > 1 && !/^(#|n,)/ {print $c}' "$1" | awk '!seen[$0]++')
+    for m in "${methods[@]}"; do
+        i=$((i + 1))
+        awk -F, -v c="$4" -v m="$m" '$c == m' "$1" | sort -t, -g -k"$5,$5" >"$work/series$i.csv"
+        # colours repeat after 8 series; the point shape tells them apart
+        clauses+=("\"$work/series$i.csv\" using $5:$6 with linespoints lt $i pt $((i % 13 + 1)) ps 0.9 title \"$m\"")
+    done
+    [ $# -ge 9 ] && clauses+=("$9")
+    local joined
+    joined=$(printf '%s, ' "${clauses[@]}")
     gnuplot <<EOF
-set terminal pngcairo size 960,640 font "sans,10"
+set terminal pngcairo size 1000,640 font "sans,10" noenhanced
 set output "$2"
 set datafile separator ","
 set title "$3"
@@ -122,9 +148,7 @@ set xlabel "$7"
 set ylabel "$8"
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key outside right top
-methods = '$methods'
-plot for [i=1:words(methods)] "$1" using (strcol($4) eq word(methods, i) ? \$$5 : NaN):$6 \
-    with linespoints pt 7 ps 0.8 title word(methods, i)${9:+, $9}
+plot ${joined%, }
 EOF
     echo "wrote $2" >&2
 }
@@ -147,6 +171,9 @@ image_sweep() {
     fi
     echo "# load average (1, 5, 15 min) before: $load_before; after: $(cut -d' ' -f1-3 /proc/loadavg); $(nproc) cores" >>"$csv"
     echo "wrote $csv" >&2
+}
+
+image_chart() {
     plot "$csv" "$out/radiosity_error_vs_time.png" \
         "cornell.pov 300x300: error against converged POV-Ray, $threads threads" \
         2 4 6 "wall time (s)" "mean absolute error (8-bit values, 0..1)" \
@@ -158,11 +185,20 @@ library_sweep() {
     [ $quick = 1 ] && flags=(--quick)
     "$library" "${flags[@]}" "$scene" >"$lib_csv"
     echo "wrote $lib_csv" >&2
+}
+
+library_chart() {
+    local lib_csv=$out/radiosity_solver_sweep.csv
     plot "$lib_csv" "$out/radiosity_solver_sweep.png" \
-        "cornell.pov geometry, patch level (1 thread): points along a series = finer meshes" \
+        "cornell.pov geometry, patch level, 1 thread: along a series the mesh gets finer (max edge 24, 16, 12, 8)" \
         3 9 11 "form factors + solve CPU time (s)" "relative L1 error of B against the fine-mesh reference"
 }
 
-[ $images = 1 ] && image_sweep
-[ -n "$library" ] && library_sweep
+if [ $plot_only = 1 ]; then
+    [ -f "$csv" ] && image_chart
+    [ -f "$out/radiosity_solver_sweep.csv" ] && library_chart
+    exit 0
+fi
+if [ $images = 1 ]; then image_sweep; image_chart; fi
+if [ -n "$library" ]; then library_sweep; library_chart; fi
 exit 0

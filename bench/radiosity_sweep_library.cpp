@@ -355,7 +355,7 @@ int sweep(int argc, char** argv) {
         const SceneMesh mesh = mesh_scene(scene, edge);
         const double n = double(mesh.patches.size());
         std::fprintf(stderr, "edge %g: %zu elements\n", edge, mesh.patches.size());
-        for (int rays : quick ? std::vector<int>{64, 256} : std::vector<int>{16, 64, 256, 1024})
+        for (int rays : quick ? std::vector<int>{64, 256} : std::vector<int>{16, 64, 256, 1024, 4096})
             report(mesh, edge, {"raycast", rays, "lu"});
         for (int res : quick ? std::vector<int>{16} : std::vector<int>{16, 32, 64})
             if (n * n * 3 * res * res < 1.5e9)  // brute-force hemicube: keep each run short
