@@ -37,7 +37,8 @@ bench: configure
 	$(BUILD)/bench/parse_includes
 	bench/render_vs_povray.sh $(BUILD)/lumen
 
-# Radiosity error against time (about 15 minutes; writes docs/radiosity_*.csv and .png).
+# Radiosity error against time (about 18 minutes on a shared 2-core machine; writes
+# docs/radiosity_*.csv and .png).
 # QUICK=1: a few points, written to $(BUILD)/radiosity-bench instead.
 bench-radiosity: configure
 	@tools/install-deps.sh --bench

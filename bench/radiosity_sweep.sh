@@ -97,7 +97,7 @@ lumen_run() {  # method options...
 # Radiosity_Form_Factors says; the library sweep compares the methods.)
 lumen_sweep() {
     local v
-    local sizes=(16 8 4 2 1.5) gather_sizes=(8 4 2) errors=(0.3 0.2 0.1) gathers=(50 200 800)
+    local sizes=(16 8 4 2 1.5) gather_sizes=(8 4 2) errors=(0.3 0.2 0.1 0.05) gathers=(50 200 800)
     local solvers=(jacobi matrix gauss_seidel progressive) rays=(32 128 1024)
     if [ $quick = 1 ]; then
         sizes=(8) gather_sizes=(4) errors=() gathers=() solvers=(matrix) rays=(64)
@@ -105,13 +105,16 @@ lumen_sweep() {
     for v in "${sizes[@]}"; do
         lumen_run "lumen preview: patch size" Radiosity_Display=preview Radiosity_Patch_Size=$v
     done
-    for v in "${gather_sizes[@]}"; do lumen_run "lumen gather: patch size" Radiosity_Patch_Size=$v; done
+    for v in "${gather_sizes[@]}"; do
+        lumen_run "lumen gather: patch size" Radiosity_Display=gather Radiosity_Patch_Size=$v
+    done
     for v in "${errors[@]}"; do
-        lumen_run "lumen gather: cache error" Radiosity_Patch_Size=2 Radiosity_Cache_Error=$v
+        lumen_run "lumen gather: cache error" Radiosity_Display=gather Radiosity_Patch_Size=2 \
+            Radiosity_Cache_Error=$v
     done
     for v in "${gathers[@]}"; do
-        lumen_run "lumen gather: rays" Radiosity_Patch_Size=4 Radiosity_Cache_Error=0.2 \
-            Radiosity_Gather_Rays=$v
+        lumen_run "lumen gather: rays" Radiosity_Display=gather Radiosity_Patch_Size=4 \
+            Radiosity_Cache_Error=0.2 Radiosity_Gather_Rays=$v
     done
     # jacobi stops after the scene's recursion_limit bounces as POV does; the others converge.
     for v in "${solvers[@]}"; do
