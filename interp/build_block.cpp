@@ -53,6 +53,7 @@ void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
+        if (t->finish && t->finish->unsupported) out.push_back(*t->finish->unsupported);
         if (t->normal) collect(t->normal->pattern, out);
         for (const auto& e : t->texture_map) collect(e.texture, out);
     }
@@ -155,6 +156,7 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
     const Value& v = item.value;
     if (v.is<scene::ObjectPtr>()) {
         scene.objects.push_back(v.as<scene::ObjectPtr>());
+        collect_csg_lights(*scene.objects.back(), scene::Transform{}, scene.lights);
     } else if (v.is<std::shared_ptr<const scene::Camera>>()) {
         scene.camera = *v.as<std::shared_ptr<const scene::Camera>>();
     } else if (v.is<std::shared_ptr<const scene::Light>>()) {

@@ -29,6 +29,32 @@ bool is_other_camera_type(const std::string& w) {
            w == "spherical" || w == "cylinder" || w == "mesh_camera";
 }
 
+// Where the camera vectors were written (the camera block when they were not).
+struct VectorLocs {
+    SourceLoc direction, up, right;
+};
+
+bool parallel(const glm::dvec3& a, const glm::dvec3& b) {
+    return glm::length(glm::cross(a, b)) <= 1e-9 * glm::length(a) * glm::length(b);
+}
+
+// Step 6: the final direction, up and right must span space, or pixels cannot be mapped to
+// distinct rays (POV renders a black or smeared image; lumen reports the cause instead).
+void check_basis(ItemCursor& cur, const scene::Camera& cam, const VectorLocs& at) {
+    if (cam.type == scene::CameraType::Other) return;
+    for (const glm::dvec3& x : {cam.location, cam.direction, cam.up, cam.right})
+        if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
+            cur.fail(cam.loc, "camera vectors must be finite");
+    if (!(glm::length(cam.direction) > 0)) cur.fail(at.direction, "camera direction is a zero vector");
+    if (!(glm::length(cam.up) > 0)) cur.fail(at.up, "camera up is a zero vector");
+    if (!(glm::length(cam.right) > 0)) cur.fail(at.right, "camera right is a zero vector");
+    if (parallel(cam.up, cam.direction))
+        cur.fail(at.up, "camera up is parallel to the camera direction");
+    if (parallel(cam.right, cam.direction))
+        cur.fail(at.right, "camera right is parallel to the camera direction");
+    if (parallel(cam.up, cam.right)) cur.fail(at.up, "camera up is parallel to camera right");
+}
+
 }  // namespace
 
 scene::Camera build_camera(ItemCursor& cur) {
@@ -40,6 +66,7 @@ scene::Camera build_camera(ItemCursor& cur) {
     bool have_look_at = false, have_up = false, have_right = false;
     std::optional<double> angle;
     SourceLoc angle_loc;
+    VectorLocs at{cam.loc, cam.loc, cam.loc};
     scene::Transform transform;
     auto unsupported = [&](const std::string& f, SourceLoc loc) {
         if (!cam.unsupported) cam.unsupported = scene::Unsupported{f, loc};
@@ -69,9 +96,18 @@ scene::Camera build_camera(ItemCursor& cur) {
             if (w == "cylinder") cur.expect_int(w);
             unsupported("camera '" + w + "'", item.loc);
         } else if (w == "location") cam.location = cur.expect_vector(w);
-        else if (w == "direction") cam.direction = cur.expect_vector(w);
-        else if (w == "up") { cam.up = cur.expect_vector(w); have_up = true; }
-        else if (w == "right") { cam.right = cur.expect_vector(w); have_right = true; }
+        else if (w == "direction") {
+            cam.direction = cur.expect_vector(w);
+            at.direction = item.loc;
+        } else if (w == "up") {
+            cam.up = cur.expect_vector(w);
+            have_up = true;
+            at.up = item.loc;
+        } else if (w == "right") {
+            cam.right = cur.expect_vector(w);
+            have_right = true;
+            at.right = item.loc;
+        }
         else if (w == "sky") sky = cur.expect_vector(w);
         else if (w == "look_at") { look_at = cur.expect_vector(w); have_look_at = true; }
         else if (w == "angle") {
@@ -89,7 +125,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         else cur.fail_unexpected(item, camera_keywords());
     }
     if (!(glm::length(cam.direction) > 0))
-        cur.fail(cam.loc, "camera direction is a zero vector");
+        cur.fail(at.direction, "camera direction is a zero vector");
     // Step 2: angle is the full horizontal field of view along `right`.
     if (angle && cam.type != scene::CameraType::Other) {
         if (!(*angle > 0 && *angle < 180))
@@ -113,6 +149,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         } else {
             r = glm::normalize(r);
         }
+        if (parallel(d, r)) cur.fail(at.right, "camera right is parallel to the camera direction");
         glm::dvec3 u = glm::normalize(glm::cross(d, r));
         cam.direction = d * dl;
         cam.right = r * (handed > 0 ? rl : -rl);
@@ -129,6 +166,7 @@ scene::Camera build_camera(ItemCursor& cur) {
     cam.direction = transform.vector(cam.direction);
     cam.up = transform.vector(cam.up);
     cam.right = transform.vector(cam.right);
+    check_basis(cur, cam, at);
     return cam;
 }
 

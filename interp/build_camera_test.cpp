@@ -120,6 +120,28 @@ TEST_F(BuildLight, CylinderAndParallel) {
     EXPECT_DOUBLE_EQ(l.radius, 0.75);
 }
 
+TEST_F(BuildLight, LightsInsideCsgAreSceneLightsMovedWithIt) {
+    const scene::Scene s = run(
+        "#declare Lamp = union { light_source { <1,0,0>, 1 } sphere { 0, 1 } translate y }\n"
+        "object { Lamp translate z }\n"
+        "merge { union { light_source { 0, rgb <1,0,0> } rotate z*90 } translate x*5 }\n"
+        "#declare Unused = union { light_source { 0, 1 } }");
+    ASSERT_EQ(s.lights.size(), 2u);
+    expect_vec(s.lights[0].position, {1, 1, 1});
+    expect_vec(s.lights[1].position, {5, 0, 0});
+    expect_vec(s.lights[1].colour, {1, 0, 0});
+    EXPECT_TRUE(s.unsupported.empty());
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(std::get<scene::Csg>(s.objects[0]->shape).children.size(), 1u);
+}
+
+TEST_F(BuildLight, ProjectedThroughMovesWithTheLight) {
+    const scene::Light l =
+        run("light_source { 0, 1 projected_through { sphere { y, 1 } } translate x }").lights[0];
+    ASSERT_TRUE(l.projected_through);
+    expect_vec(l.projected_through->transform.point({0, 1, 0}), {1, 1, 0});
+}
+
 TEST_F(BuildLight, Errors) {
     EXPECT_EQ(error_of("light_source { 0, 1 jitter }"),
               "no error");
@@ -137,9 +159,26 @@ using BuildCameraErrors = BuildTest;
 
 TEST_F(BuildCameraErrors, DegenerateVectorsAreErrors) {
     EXPECT_EQ(error_of("camera { direction 0 }"),
-              "t.pov:1:1: error: camera direction is a zero vector");
+              "t.pov:1:10: error: camera direction is a zero vector");
     EXPECT_EQ(error_of("camera { location y look_at y }"),
               "t.pov:1:1: error: camera look_at equals its location");
+}
+
+TEST_F(BuildCameraErrors, VectorsThatDoNotSpanSpaceAreErrors) {
+    EXPECT_EQ(error_of("camera { direction z up z right x }"),
+              "t.pov:1:22: error: camera up is parallel to the camera direction");
+    EXPECT_EQ(error_of("camera { direction z up y right -2*z }"),
+              "t.pov:1:27: error: camera right is parallel to the camera direction");
+    EXPECT_EQ(error_of("camera { up y right 3*y }"),
+              "t.pov:1:10: error: camera up is parallel to camera right");
+    EXPECT_EQ(error_of("camera { right 0 }"), "t.pov:1:10: error: camera right is a zero vector");
+    EXPECT_EQ(error_of("camera { up 0 }"), "t.pov:1:10: error: camera up is a zero vector");
+    // look_at along the sky keeps right; right along the view leaves nothing to form up.
+    EXPECT_EQ(error_of("camera { right z location 0 look_at y }"), "no error");
+    EXPECT_EQ(error_of("camera { right y location 0 look_at y }"),
+              "t.pov:1:10: error: camera right is parallel to the camera direction");
+    EXPECT_EQ(error_of("camera { location <0,1,-5> look_at 0 }"), "no error");
+    EXPECT_EQ(error_of("camera { orthographic direction z up y right x }"), "no error");
 }
 
 }  // namespace

@@ -98,6 +98,12 @@ void read_object_modifiers(ItemCursor& cur, scene::Object& obj, const Extra& ext
 // ---- scene-level blocks ---------------------------------------------------------------------
 scene::Camera build_camera(ItemCursor& cur);
 scene::Light build_light(ItemCursor& cur);
+// Moves a light (position, point_at, area axes, looks_like, projected_through) by `t`.
+void transform_light(scene::Light& light, const scene::Transform& t);
+// The light sources inside CSG `obj` and its descendants, moved to world space (`to_world` is
+// the transform of what encloses obj), appended to `out` (build_csg.cpp).
+void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
+                        std::vector<scene::Light>& out);
 scene::Fog build_fog(ItemCursor& cur);
 scene::SkySphere build_sky_sphere(ItemCursor& cur);
 scene::Colour build_background(ItemCursor& cur);

@@ -1,6 +1,7 @@
 // union / merge / intersection / difference: children first, then object modifiers.
 // Children keep an empty texture when none was given: the renderer lets them inherit the
-// CSG's texture.
+// CSG's texture. Light sources inside are kept apart and become scene lights when the CSG is
+// placed in the scene.
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {
@@ -31,7 +32,7 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
                    is_unsupported_shape(item.value.as<scene::Unsupported>().feature)) {
             c = unsupported_object(item.value.as<scene::Unsupported>());
         } else if (item.value.is<std::shared_ptr<const scene::Light>>()) {
-            obj.unsupported.push_back({"light_source inside " + cur.what(), item.loc});
+            csg.lights.push_back(item.value.as<std::shared_ptr<const scene::Light>>());
             return true;
         } else {
             modifiers_seen = true;
@@ -51,8 +52,24 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
     read_object_modifiers(cur, obj, modifier, {});
     if (csg.children.size() < 2 && csg.op != scene::CsgOp::Union)
         cur.warn(cur.block_loc(), cur.what() + " should have at least 2 objects");
-    if (csg.children.empty()) cur.warn(cur.block_loc(), cur.what() + " has no objects");
+    if (csg.children.empty() && csg.lights.empty())
+        cur.warn(cur.block_loc(), cur.what() + " has no objects");
     return std::make_shared<scene::Object>(std::move(obj));
+}
+
+void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
+                        std::vector<scene::Light>& out) {
+    const auto* csg = std::get_if<scene::Csg>(&obj.shape);
+    if (!csg) return;
+    const scene::Transform world = obj.transform.then(to_world);
+    for (const auto& l : csg->lights) {
+        if (!l) continue;
+        scene::Light light = *l;
+        transform_light(light, world);
+        out.push_back(std::move(light));
+    }
+    for (const auto& c : csg->children)
+        if (c) collect_csg_lights(*c, world, out);
 }
 
 }  // namespace lumen::interp

@@ -109,18 +109,20 @@ scene::Light build_light(ItemCursor& cur) {
         else if (w == "color" || w == "colour") light.colour = cur.expect_colour(w).rgb();
         else cur.fail_unexpected(item, light_keywords());
     }
-    if (!transform.is_identity()) {
-        light.position = transform.point(light.position);
-        light.point_at = transform.point(light.point_at);
-        if (light.area) {
-            light.area->axis1 = transform.vector(light.area->axis1);
-            light.area->axis2 = transform.vector(light.area->axis2);
-        }
-        if (light.looks_like) light.looks_like = transformed(light.looks_like, transform);
-        if (light.projected_through)
-            light.projected_through = transformed(light.projected_through, transform);
-    }
+    transform_light(light, transform);
     return light;
+}
+
+void transform_light(scene::Light& light, const scene::Transform& t) {
+    if (t.is_identity()) return;
+    light.position = t.point(light.position);
+    light.point_at = t.point(light.point_at);
+    if (light.area) {
+        light.area->axis1 = t.vector(light.area->axis1);
+        light.area->axis2 = t.vector(light.area->axis2);
+    }
+    if (light.looks_like) light.looks_like = transformed(light.looks_like, t);
+    if (light.projected_through) light.projected_through = transformed(light.projected_through, t);
 }
 
 }  // namespace lumen::interp

@@ -84,6 +84,20 @@ TEST_F(BuildMaterial, FinishKeywords) {
     EXPECT_DOUBLE_EQ(f.irid_thickness, 0.2);
 }
 
+TEST_F(BuildMaterial, IridTurbulenceIsUnsupportedUntilThereIsNoise) {
+    const scene::Scene s = run("sphere { 0, 1 finish { irid { 0.3 turbulence 0.5 } } }");
+    ASSERT_EQ(s.unsupported.size(), 1u);
+    EXPECT_EQ(s.unsupported[0].feature, "irid turbulence");
+    EXPECT_EQ(s.unsupported[0].loc.column, 35u);
+    // Also through a texture that adds a finish block to a declared one.
+    EXPECT_EQ(run("#declare T = texture { finish { irid { 0.3 } } }\n"
+                  "sphere { 0, 1 texture { T finish { irid { 0.3 turbulence 1 } } } }")
+                  .unsupported.size(),
+              1u);
+    EXPECT_TRUE(run("sphere { 0, 1 finish { irid { 0.3 thickness 0.2 turbulence 0 } } }")
+                    .unsupported.empty());
+}
+
 TEST_F(BuildMaterial, ReflectionForms) {
     const scene::Finish a = *texture_of("sphere { 0, 1 finish { reflection 0.3 } }").finish;
     expect_vec(a.reflection_min, {0.3, 0.3, 0.3});

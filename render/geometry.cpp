@@ -85,6 +85,7 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     hit.uv = best.shape.uv;
     hit.object = leaf.object;
     hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
+    hit.interior_texture = leaf.interior_texture;
     hit.interior = leaf.interior;
     hit.interior_id = leaf.object;
     hit.no_image = leaf.no_image;

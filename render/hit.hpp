@@ -18,6 +18,8 @@ struct Hit {
     // The texture to shade with after CSG inheritance: the primitive's own, else the nearest
     // CSG ancestor's; null means the default texture. For meshes, the triangle's texture.
     const scene::LayeredTexture* texture = nullptr;
+    // interior_texture after the same inheritance (null = none): shades the back side.
+    const scene::LayeredTexture* interior_texture = nullptr;
     // Interior after inheritance (null = default interior). Its identity also tells which
     // "inside" the ray enters or leaves (the interior list of povray-semantics.md §5.1).
     const scene::Interior* interior = nullptr;

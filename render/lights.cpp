@@ -80,6 +80,11 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
             l.orient = s.area->orient;
             l.circular = s.area->circular || l.orient;
         }
+        if (s.projected_through) {
+            scene::Scene only;
+            only.objects.push_back(s.projected_through);
+            l.projection = std::make_shared<const Geometry>(only);
+        }
         out.push_back(l);
     }
     return out;
@@ -106,6 +111,17 @@ bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out)
     out.colour = l.colour * att;
     return std::fabs(out.colour.x) >= kEpsilon || std::fabs(out.colour.y) >= kEpsilon ||
            std::fabs(out.colour.z) >= kEpsilon;
+}
+
+bool passes_projection(const LightSource& l, const glm::dvec3& point, const glm::dvec3& dir,
+                       double distance) {
+    if (!l.projection) return true;
+    // Only the segment between the point and the light counts (an object beyond the light
+    // projects nothing), with the shadow rays' tolerance at both ends.
+    constexpr double kTolerance = 1e-3;
+    if (distance <= 2 * kTolerance) return false;
+    Hit hit;
+    return l.projection->intersect(Ray{point, dir}, kTolerance, distance - kTolerance, hit);
 }
 
 glm::dvec3 area_sample_position(const LightSource& l, double u, double v,

@@ -1,10 +1,12 @@
 // Light sources prepared once per render (povray-semantics.md §6): direction, distance and
 // attenuation (spotlight cone, cylinder, fade) at a surface point, and area-light grids.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "render/geometry.hpp"
 #include "scene/light.hpp"
 
 namespace lumen::render {
@@ -21,6 +23,8 @@ struct LightSource {
     bool area = false, jitter = false, circular = false, orient = false;
     int n1 = 1, n2 = 1, adaptive = 100;
     glm::dvec3 axis1{0}, axis2{0};
+    // projected_through: light only passes along rays that cross this object (null = none).
+    std::shared_ptr<const Geometry> projection;
 };
 
 // Direction and distance to the light and its attenuated colour at one surface point.
@@ -34,6 +38,11 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
 
 // Returns false when the point gets no light at all (outside a cone).
 bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& out);
+
+// False when `light` has a projected_through object that the segment from `point` along unit
+// `dir` (towards the light, `distance` long) does not cross: no light arrives that way.
+bool passes_projection(const LightSource& light, const glm::dvec3& point, const glm::dvec3& dir,
+                       double distance);
 
 // World position of area-light grid sample (u, v), given as fractional grid indices so jitter
 // can move it; `to_light` (unit, point -> light centre) is used by `orient`.

@@ -38,6 +38,7 @@ struct Node {
     uint32_t bounds = 0, bound_count = 0;
     const scene::Object* object = nullptr;   // the source object
     const scene::LayeredTexture* texture = nullptr;  // after inheritance; null = default
+    const scene::LayeredTexture* interior_texture = nullptr;  // after inheritance; null = none
     const scene::Interior* interior = nullptr;       // after inheritance; null = default
 };
 
@@ -59,6 +60,7 @@ constexpr int kMaxNesting = 1000;
 struct NodeContext {
     scene::Transform to_world;                  // the parent's object -> world
     const scene::LayeredTexture* texture = nullptr;
+    const scene::LayeredTexture* interior_texture = nullptr;
     const scene::Interior* interior = nullptr;
     bool no_shadow = false, no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false;

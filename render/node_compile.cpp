@@ -119,6 +119,8 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     node.flip = ctx.flip != node.inverse;
     inherit_flags(node, ctx, object);
     node.texture = object.texture.empty() ? ctx.texture : &object.texture;
+    node.interior_texture =
+        object.interior_texture.empty() ? ctx.interior_texture : &object.interior_texture;
     node.interior = object.interior ? &*object.interior : ctx.interior;
 
     std::vector<uint32_t> clips = compile_helpers(store, object.clipped_by, ctx, accelerate, ctx.clips);
@@ -131,6 +133,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         NodeContext inner;
         inner.to_world = world;
         inner.texture = node.texture;
+        inner.interior_texture = node.interior_texture;
         inner.interior = node.interior;
         pass_flags(inner, node);
         inner.flip = node.flip;
@@ -212,6 +215,8 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         inner.flip = ctx.flip;
         inherit_flags(inner, ctx, o);
         inner.texture = o.texture.empty() ? ctx.texture : &o.texture;
+        inner.interior_texture =
+            o.interior_texture.empty() ? ctx.interior_texture : &o.interior_texture;
         inner.interior = o.interior ? &*o.interior : ctx.interior;
         inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
         inner.bounds = compile_helpers(store, o.bounded_by, ctx, true, ctx.bounds);

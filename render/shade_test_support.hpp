@@ -113,6 +113,7 @@ public:
             hit.normal = n;
             hit.object = o.get();
             hit.texture = o->texture.empty() ? nullptr : &o->texture;
+            hit.interior_texture = o->interior_texture.empty() ? nullptr : &o->interior_texture;
             hit.interior = o->interior ? &*o->interior : nullptr;
             hit.interior_id = o.get();
             hit.no_image = o->no_image;

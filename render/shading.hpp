@@ -29,6 +29,7 @@ struct LightingEnv {
     const std::vector<LightSource>* lights = nullptr;
     const Intersector* geometry = nullptr;
     glm::dvec3 ambient_light{1};
+    glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};  // global_settings irid_wavelength
     bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient
     int quality = 9;
 };
@@ -36,6 +37,13 @@ struct LightingEnv {
 // POV's metallic factor per channel: 1 + m·(1 − Fm)·(rgb − 1), with the Fresnel-like Fm of the
 // angle whose cosine is `cos_angle`.
 glm::dvec3 metallic_factor(double metallic, double cos_angle, const glm::dvec3& rgb);
+
+// Thin-film interference (finish irid, POV's film model): the factor by which a light's colour
+// is multiplied before diffuse and highlights, 1 + amount·cos(2π·thickness·(|cosL| + |cosV|)/λ)
+// per channel, where cosL and cosV are the cosines of the light and view directions with
+// the normal and λ the channel's irid_wavelength.
+glm::dvec3 irid_factor(const scene::Finish& finish, const glm::dvec3& wavelength,
+                       double cos_light, double cos_view);
 
 // Ambient + emission + every light's diffuse and highlights (with shadows).
 glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,

@@ -47,6 +47,68 @@ TEST(Shading, ReflectedRayStaysAboveTheSurface) {
     EXPECT_NEAR(r.y, std::sqrt(0.5), 1e-12);
 }
 
+TEST(Shading, IridFactorFollowsPovFilmModel) {
+    // Factors measured with povray 3.7 (16-bit linear output of a lit plane, diffuse only):
+    // irid { 0.5 thickness 0.1 }, default irid_wavelength <0.70,0.52,0.48>.
+    scene::Finish f;
+    f.irid_amount = 0.5;
+    f.irid_thickness = 0.1;
+    const glm::dvec3 wl(0.70, 0.52, 0.48);
+    const glm::dvec3 head_on = irid_factor(f, wl, 1.0, -1.0);
+    EXPECT_NEAR(head_on.x, 0.888748, 2e-4);
+    EXPECT_NEAR(head_on.y, 0.625740, 2e-4);
+    EXPECT_NEAR(head_on.z, 0.566964, 2e-4);
+    const glm::dvec3 light_at_60 = irid_factor(f, wl, 0.5, -1.0);  // view head-on
+    EXPECT_NEAR(light_at_60.x, 1.111224, 2e-4);
+    EXPECT_NEAR(light_at_60.y, 0.880384, 2e-4);
+    EXPECT_NEAR(light_at_60.z, 0.808608, 2e-4);
+    // The eye and light angles enter symmetrically; no film means no change.
+    const glm::dvec3 eye_at_60 = irid_factor(f, wl, 1.0, 0.5);
+    EXPECT_NEAR(eye_at_60.y, light_at_60.y, 1e-12);
+    f.irid_thickness = 0;
+    EXPECT_DOUBLE_EQ(irid_factor(f, wl, 0.3, 0.7).z, 1.5);
+}
+
+TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
+    scene::Light sl;
+    sl.position = {0, 0, -10};
+    const std::vector<LightSource> lights = prepare_lights({sl});
+    LightingEnv env;
+    env.lights = &lights;
+    env.quality = 3;  // no shadow rays: no geometry needed
+    scene::Finish f;
+    f.ambient = glm::dvec3(0.2);
+    f.diffuse = 0.25;
+    f.phong = 0.3;
+    f.irid_amount = 0.5;
+    f.irid_thickness = 0.1;
+    SurfaceSample s;
+    s.view = {0, 0, 1};
+    s.normal = {0, 0, -1};
+    s.colour = glm::dvec3(1);
+    s.finish = &f;
+    ThreadState state;
+    const glm::dvec3 lit = local_light(s, env, InteriorList{}, state);
+    const glm::dvec3 k = irid_factor(f, env.irid_wavelength, 1.0, 1.0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], 0.2 + (0.25 + 0.3) * k[c], 1e-12);
+}
+
+TEST(Lights, ProjectedThroughPassesOnlyAlongSegmentsCrossingTheObject) {
+    scene::Light l;
+    l.position = {0, 10, 0};
+    auto ball = std::make_shared<scene::Object>();
+    ball->shape = scene::Sphere{{0, 5, 0}, 1};
+    l.projected_through = ball;
+    const auto p = prepare_lights({l});
+    const glm::dvec3 up(0, 1, 0);
+    EXPECT_TRUE(passes_projection(p[0], {0, 0, 0}, up, 10));
+    EXPECT_FALSE(passes_projection(p[0], {3, 0, 0}, glm::normalize(glm::dvec3(-3, 10, 0)),
+                                   std::sqrt(109.0)));
+    // The object must lie between the point and the light, not beyond the light.
+    EXPECT_FALSE(passes_projection(p[0], {0, 0, 0}, up, 3));
+    EXPECT_TRUE(passes_projection(prepare_lights({scene::Light{}})[0], {0, 0, 0}, up, 1));
+}
+
 TEST(Lights, FadeIsTwoAtTheLightAndOneAtFadeDistance) {
     scene::Light l;
     l.position = {0, 0, 0};

@@ -38,7 +38,7 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         ++counters.shadow_rays;
         Hit hit;
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
-        filter *= surface_filter(hit.texture, hit.point);
+        filter *= surface_filter(facing_texture(hit, dir), hit.point);
         if (is_black(filter)) return glm::dvec3(0);
         // Fake caustics brighten light passing a transparent surface head-on.
         if (hit.interior && hit.interior->caustics != 0)

@@ -1,5 +1,5 @@
-// Box: slab test (zero direction components handled by SlabRay), the face normal from the
-// slab that gave the entry or exit.
+// Box: slab test (a zero direction component divides to ±inf), the face normal from the slab
+// that gave the entry or exit.
 #include <cmath>
 
 #include "render/shapes.hpp"
@@ -14,12 +14,13 @@ BoxShape make_box(const scene::Box& b) {
 
 bool intersect(const BoxShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
-    SlabRay slab(r.o, r.d);
     double enter = -Aabb::inf, exit = Aabb::inf;
     int enter_axis = 0, exit_axis = 0;
     for (int i = 0; i < 3; ++i) {
-        double a = (s.box.lo[i] - r.o[i]) * slab.inv_dir[i];
-        double c = (s.box.hi[i] - r.o[i]) * slab.inv_dir[i];
+        // Divide (not multiply by 1/d): a face then gets the same depth as a plane through it,
+        // bit for bit, so coplanar surfaces tie exactly and scene order decides, as in POV.
+        double a = (s.box.lo[i] - r.o[i]) / r.d[i];
+        double c = (s.box.hi[i] - r.o[i]) / r.d[i];
         if (a > c) std::swap(a, c);
         if (a > enter) { enter = a; enter_axis = i; }
         if (c < exit) { exit = c; exit_axis = i; }

@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "render/hit.hpp"
 #include "scene/texture.hpp"
 
 namespace lumen::render {
@@ -18,6 +19,16 @@ struct ResolvedLayer {
 };
 
 const scene::Finish& default_finish();
+
+// The texture a ray travelling along `dir` sees at `hit`: the interior_texture when the ray
+// meets the back of the surface (the outward normal faces away from where it comes from),
+// else the texture.
+inline const scene::LayeredTexture* facing_texture(const Hit& hit, const glm::dvec3& dir) {
+    const glm::dvec3& n = hit.normal;
+    if (hit.interior_texture && n.x * dir.x + n.y * dir.y + n.z * dir.z > 0)
+        return hit.interior_texture;
+    return hit.texture;
+}
 
 // Plain texture -> its layer. A patterned texture used as one layer of several is resolved by
 // blending its entries' pigments and taking the finish/normal of the heavier entry (POV blends

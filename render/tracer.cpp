@@ -77,6 +77,7 @@ Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const Tra
     env_.lights = &lights_;
     env_.geometry = &geometry_;
     env_.ambient_light = scene.globals.ambient_light;
+    env_.irid_wavelength = scene.globals.irid_wavelength;
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
@@ -120,6 +121,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     RayColour c;
     if (find_hit(ray, ctx.kind, hit)) {
         *depth = hit.t;
+        hit.texture = facing_texture(hit, ray.dir);
         c = shade(ray, hit, here, state);
     } else {
         c = sky(ray.dir);

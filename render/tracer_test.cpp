@@ -283,6 +283,60 @@ TEST(Tracer, GroundFogWithTransmit) {
     expect_matches(s, "groundfog.ppm", 1);
 }
 
+TEST(Tracer, InteriorTextureShadesTheBackOfSurfacesAndTheirShadows) {
+    // Camera inside a red sphere whose inside is green; a white sphere (blue inside) seen from
+    // outside; a clear sphere with a black inside, seen as a black disc and casting a shadow.
+    scene::Scene s = scene_37();
+    s.camera = look_at_camera({0, 0, -2}, {0, 0, 0});
+    s.lights.push_back(point_light({1, 1, -1}, {1, 1, 1}));
+    auto with_inside = [](scene::ObjectPtr o, const Material& inside) {
+        auto copy = std::make_shared<scene::Object>(*o);
+        copy->interior_texture = texture_of(inside);
+        return scene::ObjectPtr(copy);
+    };
+    s.objects.push_back(with_inside(sphere({0, 0, 0}, 4, {rgb(1, 0, 0)}), {rgb(0, 1, 0)}));
+    s.objects.push_back(with_inside(sphere({0.5, 0, 1}, 0.5, {rgb(1, 1, 1)}), {rgb(0, 0, 1)}));
+    s.objects.push_back(
+        with_inside(sphere({-0.6, 0.2, 0.5}, 0.4, {{1, 1, 1, 0, 1}}), {rgb(0, 0, 0)}));
+    expect_matches(s, "inttex.ppm", 0);
+}
+
+TEST(Tracer, ProjectedThroughLightsOnlyPassThroughTheirObject) {
+    // A spot of light through a sphere half way to the light, and a shadowless fill light
+    // projected through a smaller sphere.
+    scene::Scene s = scene_37();
+    s.camera = look_at_camera({0, 3, -4}, {0, 0, 0});
+    scene::Light top = point_light({0, 6, 0}, {1, 1, 1});
+    top.projected_through = sphere({0.5, 3, 0}, 1, {});
+    s.lights.push_back(top);
+    scene::Light fill = point_light({-3, 4, -3}, glm::dvec3(0.3));
+    fill.shadowless = true;
+    fill.projected_through = sphere({-1.5, 2, -1.5}, 0.5, {});
+    s.lights.push_back(fill);
+    s.objects.push_back(plane({0, 1, 0}, 0, {rgb(1, 1, 1)}));
+    s.objects.push_back(sphere({1, 0.5, 0}, 0.5, {rgb(1, 0.5, 0.2)}));
+    expect_matches(s, "projthru.ppm", 0);
+}
+
+TEST(Tracer, IridescenceTintsDiffuseAndHighlights) {
+    scene::Scene s = scene_37();
+    s.globals.irid_wavelength = {0.6, 0.5, 0.35};
+    s.camera.location = {0, 0, -5};
+    s.lights.push_back(point_light({-3, 4, -6}, {1, 1, 1}));
+    s.lights.push_back(point_light({4, 0, -2}, glm::dvec3(0.4)));
+    Material pearl{rgb(0.8, 0.8, 0.8)};
+    pearl.finish.phong = 0.6;
+    pearl.finish.irid_amount = 0.4;
+    pearl.finish.irid_thickness = 0.3;
+    s.objects.push_back(sphere({-1.1, 0, 0}, 1, pearl));
+    Material film{rgb(1, 1, 1)};
+    film.finish.diffuse = 0.5;
+    film.finish.irid_amount = 0.7;
+    film.finish.irid_thickness = 0.8;
+    s.objects.push_back(sphere({1.1, 0, 0}, 1, film));
+    expect_matches(s, "irid.ppm", 0);
+}
+
 TEST(Tracer, UnsupportedFeatureIsAnError) {
     scene::Scene s = v1_scene(true);
     s.unsupported.push_back({"isosurface", {}});

@@ -18,6 +18,7 @@ namespace lumen::scene {
 
 struct Object;
 using ObjectPtr = std::shared_ptr<const Object>;
+struct Light;
 
 struct Sphere { glm::dvec3 center{0}; double radius = 1; };
 struct Plane { glm::dvec3 normal{0, 1, 0}; double distance = 0; };  // n̂·p = d, n normalised
@@ -50,7 +51,13 @@ struct Mesh {
     std::optional<glm::dvec3> inside_vector;
 };
 enum class CsgOp { Union, Merge, Intersection, Difference };
-struct Csg { CsgOp op = CsgOp::Union; std::vector<ObjectPtr> children; };
+struct Csg {
+    CsgOp op = CsgOp::Union;
+    std::vector<ObjectPtr> children;
+    // Light sources written inside the CSG, in its coordinates: lights of the scene that move
+    // with it (the interpreter adds them to Scene::lights), never geometry.
+    std::vector<std::shared_ptr<const Light>> lights;
+};
 // A shape lumen does not render (blob, isosurface, text, ...); rendering it is an error.
 struct UnsupportedShape { Unsupported what; };
 

@@ -15,6 +15,7 @@
 
 #include "tests/differential/image_compare.hpp"
 #include "tests/differential/report.hpp"
+#include "tests/differential/shell.hpp"
 #include "tests/differential/scene_list.hpp"
 
 namespace {
@@ -24,19 +25,6 @@ using namespace lumen::differential;
 
 constexpr int kSkip = 77;
 const char* const kPovrayScenes = "/usr/share/povray-3.7/scenes";
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // Runs a shell command in `dir`, with its output in `log`; returns the exit status and the
 // wall time.
