@@ -155,8 +155,17 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
     }
     const Value& v = item.value;
     if (v.is<scene::ObjectPtr>()) {
-        scene.objects.push_back(v.as<scene::ObjectPtr>());
-        collect_csg_lights(*scene.objects.back(), scene::Transform{}, scene.lights);
+        scene::ObjectPtr obj = v.as<scene::ObjectPtr>();
+        // POV gives an object without a texture the #default texture in effect where the
+        // object is placed in the scene, not where it was declared (CSG children without a
+        // texture inherit it).
+        if (obj->texture.empty() && (ctx.default_pigment || ctx.default_finish || ctx.default_normal)) {
+            auto textured = std::make_shared<scene::Object>(*obj);
+            textured->texture.push_back(default_texture(ctx, obj->loc));
+            obj = textured;
+        }
+        scene.objects.push_back(obj);
+        collect_csg_lights(*obj, scene::Transform{}, scene.lights);
     } else if (v.is<std::shared_ptr<const scene::Camera>>()) {
         scene.camera = *v.as<std::shared_ptr<const scene::Camera>>();
     } else if (v.is<std::shared_ptr<const scene::Light>>()) {

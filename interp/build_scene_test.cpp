@@ -98,6 +98,23 @@ TEST_F(BuildScene, DumpPrintsOnlyNonDefaults) {
               "}\n");
 }
 
+TEST_F(BuildScene, UntexturedObjectsTakeTheDefaultInEffectWhereTheyArePlaced) {
+    // As in POV-Ray (iortest.pov relies on it): the declaration comes before the #default.
+    const scene::Scene s = run("#declare S = union { sphere { 0, 1 } sphere { x, 1 } }\n"
+                               "object { S }\n"
+                               "#default { texture { pigment { rgb <1,0,0> } finish { ambient 1 } } }\n"
+                               "object { S translate y }\n"
+                               "sphere { 0, 1 pigment { rgb 1 } }");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_TRUE(s.objects[0]->texture.empty());
+    ASSERT_EQ(s.objects[1]->texture.size(), 1u);
+    const scene::Texture& t = *s.objects[1]->texture[0];
+    ASSERT_TRUE(t.pigment && t.finish);
+    EXPECT_EQ(t.pigment->colour, (scene::Colour{1, 0, 0, 0, 0}));
+    expect_vec(t.finish->ambient, {1, 1, 1});
+    EXPECT_EQ(s.objects[2]->texture.back()->pigment->colour, (scene::Colour{1, 1, 1, 0, 0}));
+}
+
 TEST_F(BuildScene, DumpEmptySceneIsEmptyObject) {
     EXPECT_EQ(dump_scene_json(scene::Scene{}), "{}\n");
 }

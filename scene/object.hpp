@@ -56,7 +56,7 @@ struct Csg {
     std::vector<ObjectPtr> children;
     // Light sources written inside the CSG, in its coordinates: lights of the scene that move
     // with it (the interpreter adds them to Scene::lights), never geometry.
-    std::vector<std::shared_ptr<const Light>> lights;
+    std::vector<std::shared_ptr<const Light>> lights{};
 };
 // A shape lumen does not render (blob, isosurface, text, ...); rendering it is an error.
 struct UnsupportedShape { Unsupported what; };
