@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "parser/diagnostics.hpp"
@@ -86,23 +87,32 @@ EncodedImage prepare_pixels(const Image& image, const Encoding& e, const OutputO
                                     : EncodedImage::Curve::Power;
     out.file_gamma = e.file_gamma;
     out.values.resize(size_t(image.width) * image.height * channels);
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            const float* p = image.at(x, y);
-            float* q = &out.values[(size_t(y) * image.width + x) * channels];
-            const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
-            for (int c = 0; c < 3; ++c) {
-                float v = p[c];
-                // The buffer holds premultiplied colour; straight alpha files need it undone.
-                if (o.alpha && !floating && alpha > 0) v /= alpha;
-                if (floating)
-                    q[c] = e.identity ? v : to_linear(v, e);
-                else
-                    q[c] = float(quantise(encode(v, e), maxval));
+    // Rows [y0, y1): the transfer curves cost a pow per channel, so bands run in parallel.
+    auto encode_rows = [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            for (int x = 0; x < image.width; ++x) {
+                const float* p = image.at(x, y);
+                float* q = &out.values[(size_t(y) * image.width + x) * channels];
+                const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
+                for (int c = 0; c < 3; ++c) {
+                    float v = p[c];
+                    // The buffer holds premultiplied colour; straight alpha files need it undone.
+                    if (o.alpha && !floating && alpha > 0) v /= alpha;
+                    if (floating)
+                        q[c] = e.identity ? v : to_linear(v, e);
+                    else
+                        q[c] = float(quantise(encode(v, e), maxval));
+                }
+                if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval));
             }
-            if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval));
         }
-    }
+    };
+    const int bands = int(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    std::vector<std::thread> helpers;
+    for (int b = 1; b < bands; ++b)
+        helpers.emplace_back(encode_rows, image.height * b / bands, image.height * (b + 1) / bands);
+    encode_rows(0, image.height / bands);
+    for (std::thread& t : helpers) t.join();
     return out;
 }
 
