@@ -53,7 +53,7 @@ void jitter2d(double x, double y, double& jx, double& jy) {
     jy = kJitter[kHash[(kHash[ix2 & 4095] ^ iy2) & 4095] & 255];
 }
 
-double ColourCompare::difference(const Sample& a, const Sample& b) const {
+glm::dvec4 ColourCompare::encode(const Sample& s) const {
     auto e = [&](double v) {
         double lin = v;
         if (decode_gamma == 0)
@@ -62,8 +62,16 @@ double ColourCompare::difference(const Sample& a, const Sample& b) const {
             lin = v > 0 ? std::pow(v, decode_gamma) : v;
         return lin > 0 ? std::pow(lin, 1.0 / aa_gamma) : 0.0;
     };
-    return std::fabs(e(a.rgb.x) - e(b.rgb.x)) + std::fabs(e(a.rgb.y) - e(b.rgb.y)) +
-           std::fabs(e(a.rgb.z) - e(b.rgb.z)) + std::fabs(a.t - b.t);
+    return {e(s.rgb.x), e(s.rgb.y), e(s.rgb.z), s.t};
+}
+
+double ColourCompare::difference(const glm::dvec4& a, const glm::dvec4& b) {
+    return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z) +
+           std::fabs(a.w - b.w);
+}
+
+double ColourCompare::difference(const Sample& a, const Sample& b) const {
+    return difference(encode(a), encode(b));
 }
 
 ColourCompare colour_compare_for(const scene::Scene& scene, double aa_gamma) {
@@ -138,31 +146,36 @@ void BlockRenderer::render_am1(int left, int top, int right, int bottom, Image& 
     std::vector<unsigned char> done(size_t(w) * h, 0);
     auto idx = [&](int x, int y) { return size_t(y - top + 1) * w + (x - left + 1); };
     const double thr = options_.aa_threshold;
+    // Each value's compared form, kept in step with it (a pixel is compared twice or more).
+    std::vector<glm::dvec4> coded(size_t(w) * h);
+    auto set = [&](size_t i, const Sample& s) {
+        value[i] = s;
+        coded[i] = compare_.encode(s);
+    };
 
     for (int x = left; x <= right; ++x) {
-        value[idx(x, top - 1)] = sample(x, top - 1, state, primary_rays);
+        set(idx(x, top - 1), sample(x, top - 1, state, primary_rays));
         done[idx(x, top - 1)] = 1;
     }
     for (int y = top; y <= bottom; ++y) {
-        value[idx(left - 1, y)] = sample(left - 1, y, state, primary_rays);
+        set(idx(left - 1, y), sample(left - 1, y, state, primary_rays));
         done[idx(left - 1, y)] = 1;
         for (int x = left; x <= right; ++x) {
             const Sample c = sample(x, y, state, primary_rays);
-            value[idx(x, y)] = c;
-            const bool ld = compare_.difference(value[idx(x - 1, y)], c) >= thr;
-            const bool td = compare_.difference(value[idx(x, y - 1)], c) >= thr;
+            set(idx(x, y), c);
+            const glm::dvec4 cc = coded[idx(x, y)];
+            const bool ld = ColourCompare::difference(coded[idx(x - 1, y)], cc) >= thr;
+            const bool td = ColourCompare::difference(coded[idx(x, y - 1)], cc) >= thr;
             if (ld && !done[idx(x - 1, y)]) {
-                value[idx(x - 1, y)] =
-                    supersample(x - 1, y, value[idx(x - 1, y)], state, primary_rays);
+                set(idx(x - 1, y), supersample(x - 1, y, value[idx(x - 1, y)], state, primary_rays));
                 done[idx(x - 1, y)] = 1;
             }
             if (td && !done[idx(x, y - 1)]) {
-                value[idx(x, y - 1)] =
-                    supersample(x, y - 1, value[idx(x, y - 1)], state, primary_rays);
+                set(idx(x, y - 1), supersample(x, y - 1, value[idx(x, y - 1)], state, primary_rays));
                 done[idx(x, y - 1)] = 1;
             }
             if (ld || td) {
-                value[idx(x, y)] = supersample(x, y, c, state, primary_rays);
+                set(idx(x, y), supersample(x, y, c, state, primary_rays));
                 done[idx(x, y)] = 1;
             }
         }

@@ -5,6 +5,8 @@
 #pragma once
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "render/camera.hpp"
 #include "render/render.hpp"
 #include "render/tracer.hpp"
@@ -29,6 +31,9 @@ struct ColourCompare {
     double decode_gamma = 1.0;  // working -> linear power; 0 = sRGB curve (legacy scenes)
     double aa_gamma = 2.5;
     double difference(const Sample& a, const Sample& b) const;
+    // The compared form of a sample (encoded rgb, t): encode each sample once, compare many times.
+    glm::dvec4 encode(const Sample& s) const;
+    static double difference(const glm::dvec4& a, const glm::dvec4& b);
 };
 ColourCompare colour_compare_for(const scene::Scene& scene, double aa_gamma);
 

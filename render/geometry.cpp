@@ -22,12 +22,17 @@ double next_up(double x) {
     return std::bit_cast<double>(std::bit_cast<uint64_t>(x) + 1);
 }
 
+// Up to this many bounded objects are tested in a loop instead of through the BVH.
+constexpr size_t kDirectRoots = 8;
+
 }  // namespace
 
 struct Geometry::Impl {
     NodeStore store;
     std::vector<uint32_t> bounded;    // roots in BVH order
     std::vector<uint32_t> unbounded;  // roots tested by every ray
+    std::vector<Aabb> bounded_boxes;  // bounded[i]'s box (small scenes skip the BVH walk)
+    Aabb all_bounded;                 // around all of bounded_boxes
     Bvh bvh;
     size_t primitives = 0;
 };
@@ -52,6 +57,10 @@ Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) 
     }
     impl_->bvh.build(boxes, 2);
     for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(finite[i]);
+    for (uint32_t r : impl_->bounded) {
+        impl_->bounded_boxes.push_back(store.nodes[r].surface);
+        impl_->all_bounded.expand(store.nodes[r].surface);
+    }
 }
 
 Geometry::~Geometry() = default;
@@ -79,11 +88,20 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
         }
     };
     for (uint32_t r : impl_->unbounded) test(r);
-    double prune = limit;
-    impl_->bvh.traverse(SlabRay(ray.origin, ray.dir), t_min, prune, [&](uint32_t i) {
-        test(impl_->bounded[i]);
-        prune = limit;
-    });
+    const SlabRay slab(ray.origin, ray.dir);
+    if (impl_->bounded.size() <= kDirectRoots) {
+        // A handful of objects: past the box around them all (one test culls most shadow
+        // rays), their own boxes cull as well as the BVH's inner nodes would.
+        if (!impl_->bounded.empty() && slab.hits(impl_->all_bounded, t_min, limit))
+            for (size_t i = 0; i < impl_->bounded.size(); ++i)
+                if (slab.hits(impl_->bounded_boxes[i], t_min, limit)) test(impl_->bounded[i]);
+    } else {
+        double prune = limit;
+        impl_->bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
+            test(impl_->bounded[i]);
+            prune = limit;
+        });
+    }
     if (!found) return false;
 
     const Node& leaf = store.nodes[best.leaf];
