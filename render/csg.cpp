@@ -69,23 +69,29 @@ bool csg_accepts(const NodeStore& store, const Node& n, uint32_t which, const gl
     return true;
 }
 
+// Nearest hit of a Shape node, ignoring its clipped_by and bounded_by.
+inline bool intersect_primitive(const NodeStore& store, const Node& n, uint32_t index,
+                                const Ray& ray, double tmin, double tmax, bool shadow,
+                                NodeHit& hit) {
+    if (shadow && n.no_shadow) return false;
+    LocalRay local{ray.origin, ray.dir};
+    if (!n.identity) {
+        const scene::Transform& xf = store.transforms[n.xf];
+        local = {xf.inv_point(ray.origin), xf.inv_vector(ray.dir)};
+    }
+    if (!shape_intersect(store.shapes[n.shape], local, std::max(tmin, n.min_depth), tmax,
+                         hit.shape))
+        return false;
+    hit.leaf = index;
+    return true;
+}
+
 // Nearest hit ignoring the node's own clipped_by.
 bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
                          double tmax, bool shadow, NodeHit& hit) {
     const Node& n = store.nodes[index];
-    if (n.kind == NodeKind::Shape) {
-        if (shadow && n.no_shadow) return false;
-        LocalRay local{ray.origin, ray.dir};
-        if (!n.identity) {
-            const scene::Transform& xf = store.transforms[n.xf];
-            local = {xf.inv_point(ray.origin), xf.inv_vector(ray.dir)};
-        }
-        if (!shape_intersect(store.shapes[n.shape], local, std::max(tmin, n.min_depth), tmax,
-                             hit.shape))
-            return false;
-        hit.leaf = index;
-        return true;
-    }
+    if (n.kind == NodeKind::Shape)
+        return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit);
     SlabRay slab(ray.origin, ray.dir);
     bool found = false;
     double best = tmax;
@@ -114,6 +120,9 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
 bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
                     double tmax, bool shadow, NodeHit& hit) {
     const Node& n = store.nodes[index];
+    // The common case (a plain primitive) without the retry loop.
+    if (n.kind == NodeKind::Shape && n.clip_count == 0 && n.bound_count == 0)
+        return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit);
     if (n.bound_count && !ray_meets_bounds(store, n, ray)) return false;
     double from = tmin;
     for (int tries = 0; tries < kMaxRejected &&
