@@ -53,6 +53,28 @@ public:
     virtual std::vector<glm::dvec3> display() const { return radiosity(); }
 };
 
+// The state the matrix solvers share: their copy of the system, the iterate B and its residual.
+class StoredSystemSolver : public Solver {
+public:
+    double residual() const override { return residual_; }
+    std::vector<glm::dvec3> radiosity() const override { return B_; }
+
+protected:
+    // Copies the system and starts from B = E.
+    void start(const RadiositySystem& s) {
+        system_ = s;
+        B_ = s.emission;
+        update_residual();
+    }
+    void update_residual() { residual_ = residual_of(system_, B_); }
+
+    RadiositySystem system_;
+    std::vector<glm::dvec3> B_;
+
+private:
+    double residual_ = 0;
+};
+
 std::unique_ptr<Solver> make_lu_solver();
 std::unique_ptr<Solver> make_jacobi_solver();
 std::unique_ptr<Solver> make_gauss_seidel_solver(double omega = 1.0);

@@ -6,14 +6,12 @@ namespace lumen::render::radiosity {
 
 namespace {
 
-class GaussSeidelSolver final : public Solver {
+class GaussSeidelSolver final : public StoredSystemSolver {
 public:
     explicit GaussSeidelSolver(double omega) : omega_(omega) {}
     std::string name() const override { return omega_ == 1.0 ? "Gauss-Seidel" : "SOR"; }
     void init(const RadiositySystem& s) override {
-        system_ = s;
-        B_ = s.emission;
-        residual_ = residual_of(system_, B_);
+        start(s);
     }
     bool step() override {
         const size_t n = system_.size();
@@ -32,17 +30,12 @@ public:
             }
             B_[i] += omega_ * (target - B_[i]);
         }
-        residual_ = residual_of(system_, B_);
+        update_residual();
         return true;
     }
-    double residual() const override { return residual_; }
-    std::vector<glm::dvec3> radiosity() const override { return B_; }
 
 private:
     double omega_;
-    RadiositySystem system_;
-    std::vector<glm::dvec3> B_;
-    double residual_ = 0;
 };
 
 }  // namespace

@@ -6,13 +6,11 @@ namespace lumen::render::radiosity {
 
 namespace {
 
-class JacobiSolver final : public Solver {
+class JacobiSolver final : public StoredSystemSolver {
 public:
     std::string name() const override { return "Jacobi"; }
     void init(const RadiositySystem& s) override {
-        system_ = s;
-        B_ = s.emission;
-        residual_ = residual_of(system_, B_);
+        start(s);
     }
     bool step() override {
         const size_t n = system_.size();
@@ -23,16 +21,9 @@ public:
             next[i] = system_.emission[i] + system_.rho[i] * gathered;
         }
         B_ = std::move(next);
-        residual_ = residual_of(system_, B_);
+        update_residual();
         return true;
     }
-    double residual() const override { return residual_; }
-    std::vector<glm::dvec3> radiosity() const override { return B_; }
-
-private:
-    RadiositySystem system_;
-    std::vector<glm::dvec3> B_;
-    double residual_ = 0;
 };
 
 }  // namespace

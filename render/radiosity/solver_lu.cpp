@@ -39,7 +39,7 @@ std::vector<double> lu_solve(std::vector<double> A, std::vector<double> b, size_
     return b;
 }
 
-class LuSolver final : public Solver {
+class LuSolver final : public StoredSystemSolver {
 public:
     std::string name() const override { return "LU"; }
     void init(const RadiositySystem& s) override {
@@ -56,16 +56,9 @@ public:
             const auto x = lu_solve(std::move(A), std::move(e), n);
             for (size_t i = 0; i < n; ++i) B_[i][c] = x[i];
         }
-        residual_ = residual_of(system_, B_);
+        update_residual();
     }
     bool step() override { return false; }
-    double residual() const override { return residual_; }
-    std::vector<glm::dvec3> radiosity() const override { return B_; }
-
-private:
-    RadiositySystem system_;
-    std::vector<glm::dvec3> B_;
-    double residual_ = 0;
 };
 
 }  // namespace
