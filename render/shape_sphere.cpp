@@ -8,6 +8,10 @@
 #include "render/shapes.hpp"
 
 namespace lumen::render {
+namespace {
+// Squared half-chord (scene units²) at or below which a ray counts as tangent and misses.
+constexpr double kTangentEpsilon = 1e-10;
+}  // namespace
 
 SphereShape make_sphere(const scene::Sphere& s) {
     SphereShape out{s.center, s.radius, s.radius * s.radius, true};
@@ -23,8 +27,10 @@ bool intersect(const SphereShape& s, const LocalRay& r, double tmin, double tmax
     double b = glm::dot(oc, r.d);
     // |oc - (b/a) d| is the distance of the closest approach: no large-number subtraction.
     glm::dvec3 perp = oc - (b / a) * r.d;
-    double disc = a * (s.radius2 - glm::dot(perp, perp));
-    if (!(disc >= 0)) return false;
+    const double half_chord2 = s.radius2 - glm::dot(perp, perp);
+    // A tangent ray misses, as in POV-Ray: the squared half chord must exceed a tiny epsilon.
+    if (!(half_chord2 > kTangentEpsilon)) return false;
+    double disc = a * half_chord2;
     double q = -(b + std::copysign(std::sqrt(disc), b));
     double c = glm::dot(oc, oc) - s.radius2;
     double t0 = q != 0 ? c / q : 0, t1 = q / a;
