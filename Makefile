@@ -1,11 +1,12 @@
 # Thin wrapper around CMake/CTest. `make render` and `make test` are all a newcomer needs.
 BUILD ?= build
 FUZZ_BUILD ?= build-fuzz
+TSAN_BUILD ?= build-tsan
 JOBS ?= 2
 FUZZ_SECONDS ?= 600
 WERROR := $(if $(filter true,$(CI)),ON,OFF)
 
-.PHONY: all deps configure build render test fuzz bench bench-radiosity clean
+.PHONY: all deps configure build render test fuzz tsan bench bench-radiosity clean
 
 all: build
 
@@ -32,6 +33,14 @@ fuzz: deps
 	cmake --build $(FUZZ_BUILD) --target parse_fuzz -j$(JOBS)
 	tests/fuzz/run.sh $(FUZZ_BUILD)/tests/fuzz/parse_fuzz $(FUZZ_SECONDS)
 
+# ThreadSanitizer build (clang) and multithreaded renders that must give no report. Not part
+# of `make test`: the instrumented build alone takes longer than the whole suite.
+tsan: deps
+	@cmake -S . -B $(TSAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+	    -DLUMEN_SANITIZE=thread -DLUMEN_TESTS=OFF >/dev/null
+	cmake --build $(TSAN_BUILD) --target lumen -j$(JOBS)
+	tools/tsan-check.sh $(TSAN_BUILD)/lumen
+
 bench: configure
 	cmake --build $(BUILD) --target lumen parse_includes -j$(JOBS)
 	$(BUILD)/bench/parse_includes
@@ -47,4 +56,4 @@ bench-radiosity: configure
 	    --lumen $(BUILD)/lumen --library $(BUILD)/bench/radiosity_sweep_library
 
 clean:
-	rm -rf $(BUILD) $(FUZZ_BUILD)
+	rm -rf $(BUILD) $(FUZZ_BUILD) $(TSAN_BUILD)
