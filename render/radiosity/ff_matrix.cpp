@@ -64,7 +64,22 @@ FormFactorMatrix ray_cast_matrix(const std::vector<Patch>& patches, int rays_per
         const auto row = ray_cast_row(patches, i, rays_per_patch, seed + 7919 * i);
         std::copy(row.begin(), row.end(), F.f.begin() + i * F.n);
     }
-    if (symmetrise_pairs) symmetrise(F, patches);
+    if (!symmetrise_pairs) return F;  // each row sums to the fraction of rays that hit: <= 1
+    // Row i after symmetrising is ½ Σ_j F_ij + ½ Σ_j (A_j/A_i) F_ji, with binomial variances
+    // from the independent rows that went into it.
+    std::vector<double> sigma(F.n, 0.0);
+    for (size_t i = 0; i < F.n; ++i) {
+        if (!(patches[i].area > 0)) continue;  // symmetrising zeroes the row
+        const double hit = F.row_sum(i);
+        double var = hit * (1 - hit);
+        for (size_t j = 0; j < F.n; ++j) {
+            const double r = patches[j].area / patches[i].area, f = F(j, i);
+            var += r * r * f * (1 - f);
+        }
+        sigma[i] = 0.5 * std::sqrt(std::max(0.0, var) / rays_per_patch);
+    }
+    symmetrise(F, patches);
+    F.row_sigma = std::move(sigma);
     return F;
 }
 

@@ -13,6 +13,9 @@ namespace lumen::render::radiosity {
 struct FormFactorMatrix {
     size_t n = 0;
     std::vector<double> f;  // row-major n x n
+    // Standard error of each row sum where F is a Monte Carlo estimate whose rows may exceed
+    // 1 by chance (symmetrised ray casting); empty when the row sums are bounded by 1.
+    std::vector<double> row_sigma;
 
     FormFactorMatrix() = default;
     explicit FormFactorMatrix(size_t size) : n(size), f(size * size, 0.0) {}
@@ -34,7 +37,8 @@ FormFactorMatrix lambert_visibility_matrix(const std::vector<Patch>& patches,
                                            uint64_t seed, const QuadratureOptions& q = {});
 
 // Gathered ray-cast rows (patches occlude each other); `symmetrise` replaces each pair by
-// the reciprocity-consistent average F_ij = (A_i F_ij + A_j F_ji) / (2 A_i).
+// the reciprocity-consistent average F_ij = (A_i F_ij + A_j F_ji) / (2 A_i) and records the
+// rows' standard errors (a symmetrised row can sum to a little over 1 by chance).
 FormFactorMatrix ray_cast_matrix(const std::vector<Patch>& patches, int rays_per_patch,
                                  uint64_t seed, bool symmetrise = true);
 

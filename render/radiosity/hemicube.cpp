@@ -30,7 +30,8 @@ std::vector<double> hemicube_point(const glm::dvec3& x, const glm::dvec3& n,
             const double dist = intersect(patches[j], x, dir);
             if (dist > 0 && dist < best) best = dist, hit = j;
         }
-        if (hit < patches.size()) row[hit] += df;
+        // Seen from behind, the nearest patch occludes but receives nothing.
+        if (hit < patches.size() && glm::dot(patches[hit].normal, dir) < 0) row[hit] += df;
     };
     const double pi = std::numbers::pi;
     for (int i = 0; i < res; ++i)

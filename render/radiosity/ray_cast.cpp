@@ -74,6 +74,9 @@ NearestPatch brute_force_nearest(const std::vector<Patch>& patches, long skip) {
             const double t = intersect(patches[j], o, d);
             if (t > 0 && t < best) best = t, hit = long(j);
         }
+        // A patch seen from behind occludes but receives nothing: its back is not the
+        // surface the unknown describes (scoring it would break reciprocity).
+        if (hit >= 0 && glm::dot(patches[size_t(hit)].normal, d) >= 0) return -1;
         return hit;
     };
 }

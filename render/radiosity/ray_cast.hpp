@@ -42,7 +42,8 @@ std::vector<double> ray_cast_row(const std::vector<Patch>& patches, size_t i, in
                                  uint64_t seed, const NearestPatch& nearest,
                                  double* escaped = nullptr);
 
-// Brute-force NearestPatch over `patches` (skipping `skip`); the reference for tests.
+// Brute-force NearestPatch over `patches` (skipping `skip`); the reference for tests. A
+// nearest patch seen from behind gives -1 (it occludes, but its back receives nothing).
 NearestPatch brute_force_nearest(const std::vector<Patch>& patches, long skip = -1);
 
 // Lambert's exact value times the fraction of `samples` jittered points on `target` that are

@@ -10,6 +10,7 @@
 #include "render/radiosity/hemicube.hpp"
 #include "render/radiosity/radiosity_test_util.hpp"
 #include "render/radiosity/ray_cast.hpp"
+#include "render/radiosity/solver.hpp"
 
 namespace lumen::render::radiosity {
 namespace {
@@ -141,6 +142,47 @@ TEST(RayCast, NearestPatchHookSeesForeignOccluders) {
     EXPECT_NEAR(row[1] + escaped, 1.0, 1e-12);
     // The hook with the plain patch list reproduces the brute-force row exactly.
     EXPECT_EQ(ray_cast_row(pair, 0, 5000, 4, patches_only), ray_cast_row(pair, 0, 5000, 4));
+}
+
+// A floor, a square above it facing up (its back to the floor) and a ceiling above both:
+// the middle square receives nothing from below yet still hides the ceiling.
+TEST(RayCast, BackFacesOccludeButReceiveNothing) {
+    const std::vector<Patch> stack = {floor_rect(1, 1),
+                                      make_patch({{0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5}}),
+                                      ceiling_rect(1, 1, 1)};
+    double escaped = 0;
+    const auto row = ray_cast_row(stack, 0, 20'000, 7, &escaped);
+    EXPECT_EQ(row[1], 0.0);
+    EXPECT_EQ(row[2], 0.0);
+    const auto cube = hemicube_row(stack, 0, 64);
+    EXPECT_EQ(cube[1], 0.0);
+    EXPECT_EQ(cube[2], 0.0);
+    // Without the middle square the ceiling is seen.
+    const std::vector<Patch> pair = {stack[0], stack[2]};
+    EXPECT_GT(ray_cast_row(pair, 0, 20'000, 7)[1], 0.15);
+    EXPECT_GT(hemicube_row(pair, 0, 64)[1], 0.15);
+}
+
+// Symmetrised Monte Carlo rows of a closed cube scatter about 1 by their standard error; the
+// stability check allows that, but still reports a row that is really over 1.
+TEST(RayCast, SymmetrisedRowSumsPassTheStabilityCheck) {
+    const auto patches = unit_cube_inside(3);
+    const auto F = ray_cast_matrix(patches, 256, 11, true);
+    ASSERT_EQ(F.row_sigma.size(), F.n);
+    double worst = 0, within = 0;
+    for (size_t i = 0; i < F.n; ++i) {
+        worst = std::max(worst, F.row_sum(i));
+        EXPECT_LT(std::abs(F.row_sum(i) - 1), 4 * F.row_sigma[i] + 1e-12) << i;
+        within = std::max(within, F.row_sigma[i]);
+    }
+    EXPECT_GT(worst, 1 + 1e-3);  // what the fixed 1e-3 margin used to reject
+    EXPECT_LT(within, 0.05);
+    RadiositySystem s = make_system(patches, F);
+    EXPECT_EQ(stability_problem(s), "");
+    s.F(0, 1) += 0.3;  // a row sum of about 1.3: far beyond 4 sigma
+    EXPECT_NE(stability_problem(s).find("sum to"), std::string::npos);
+    // Raw (unsymmetrised) rows are bounded by 1 and carry no sigma.
+    EXPECT_TRUE(ray_cast_matrix(patches, 64, 11, false).row_sigma.empty());
 }
 
 TEST(Hemicube, DeltaFormFactorsCoverTheHemisphere) {

@@ -27,7 +27,8 @@ struct RadiositySystem {
 RadiositySystem make_system(const std::vector<Patch>& patches, FormFactorMatrix F);
 
 // Problems that make the iteration diverge or the data meaningless. Empty when the system is
-// safe: every ρ in [0, 1), E finite and >= 0, F finite in [0, 1] with row sums <= 1 + 1e-3,
+// safe: every ρ in [0, 1), E finite and >= 0, F finite in [0, 1] with row sums <= 1 + 1e-3
+// (plus 4 standard errors for Monte Carlo rows, FormFactorMatrix::row_sigma),
 // areas finite and > 0 (zero-area patches are allowed only with zero rows).
 std::string stability_problem(const RadiositySystem& s);
 
