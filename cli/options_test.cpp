@@ -216,7 +216,9 @@ TEST(IniOptions, RadiosityKeys) {
                              "Radiosity_Form_Factors=hemicube", "Radiosity_FF_Rays=64",
                              "Radiosity_Hemicube_Res=32", "Radiosity_Gather_Rays=100",
                              "Radiosity_Cache_Error=0.2", "Radiosity_Display=gather",
-                             "Radiosity_Tolerance=1e-3", "+RFsol.rad", "+RFI", "+RFO", "+R4"});
+                             "Radiosity_Tolerance=1e-3", "+RFsol.rad", "+RFI", "+RFO", "+R4",
+                             "Radiosity_Subdivide=off", "Radiosity_Subdivide_Tolerance=0.3",
+                             "Radiosity_Min_Element=0.25", "Radiosity_Subdivide_Budget=2"});
     EXPECT_EQ(o.radiosity.enabled, false);
     EXPECT_EQ(o.radiosity.method, Method::GaussSeidel);
     EXPECT_EQ(o.radiosity.bounces, 0);
@@ -232,6 +234,11 @@ TEST(IniOptions, RadiosityKeys) {
     EXPECT_TRUE(o.radiosity.from_file);
     EXPECT_TRUE(o.radiosity.to_file);
     EXPECT_EQ(o.render.aa_depth, 4);  // +R is still the anti-aliasing depth
+    EXPECT_TRUE(d.radiosity.subdivision.enabled);
+    EXPECT_FALSE(o.radiosity.subdivision.enabled);
+    EXPECT_DOUBLE_EQ(o.radiosity.subdivision.tolerance, 0.3);
+    EXPECT_DOUBLE_EQ(o.radiosity.subdivision.min_element, 0.25);
+    EXPECT_DOUBLE_EQ(o.radiosity.subdivision.budget, 2);
     EXPECT_NE(error_of({"s.pov", "Radiosity_Method=lu"}).message.find("auto, matrix"),
               std::string::npos);
     EXPECT_NE(error_of({"s.pov", "Radiosity_Patch_Size=0"}).message.find("positive"),

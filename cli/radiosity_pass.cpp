@@ -58,6 +58,7 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
     const int threads = render.threads > 0 ? render.threads
                                            : int(std::max(1u, std::thread::hardware_concurrency()));
     display_.reset();
+    receivers_.reset();
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
     geometry_ = std::make_unique<render::Geometry>(scene);
@@ -68,11 +69,6 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         log.push_back(scene.sky_sphere->loc.str() +
                       ": warning: radiosity sees the background colour, not the sky_sphere");
 
-    if (options.form_factors != rad::FormFactorMethod::RayCast)
-        log.push_back(std::string("warning: Radiosity_Form_Factors=") +
-                      rad::form_factor_name(options.form_factors) +
-                      " is not available for scene meshes yet (only in the radiosity library); "
-                      "using raycast");
     const uint64_t key = scene_key(scene);
     const size_t unknowns = mesh_->unknowns();
     reused_ = loaded_ = false;
@@ -100,10 +96,11 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         const std::vector<char> seen =
             rad::visible_sides(*mesh_, *intersector_, camera, render.width, render.height);
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
-        shown_ = rad::final_gather(scene, *mesh_, *intersector_, solution_->B, seen,
-                                   ds.gather_rays, threads, solution_->G);
+        receivers_ = std::make_unique<rad::ReceiverMesh>(
+            rad::receive(scene, *mesh_, *intersector_, solution_->B, seen, ds.gather_rays,
+                         threads, solution_->G, options.subdivision));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        display_ = rad::make_preview(*mesh_, shown_, ds);
+        display_ = rad::make_preview(*mesh_, *receivers_, ds);
     } else {
         display_ = rad::make_gather(scene, *mesh_, *solution_, *intersector_, ds);
     }
@@ -118,9 +115,12 @@ std::string RadiosityPass::summary() const {
     } else if (reused_) {
         line += "solution reused (only the camera changed)";
     } else {
+        const bool cube = options_.form_factors == rad::FormFactorMethod::Hemicube;
         line += "form factors " + seconds(info_.form_factor_seconds) + " (" +
-                "raycast " +
-                std::to_string(options_.ff_rays) + " rays), solve " + seconds(info_.solve_seconds) +
+                rad::form_factor_name(options_.form_factors) + " " +
+                (cube ? "resolution " + std::to_string(options_.hemicube_res)
+                      : std::to_string(options_.ff_rays) + " rays") +
+                "), solve " + seconds(info_.solve_seconds) +
                 " (" + info_.method + " " + std::to_string(info_.iterations) + ")";
     }
     if (const auto* g = dynamic_cast<const rad::GatherStats*>(display_.get()))
@@ -128,7 +128,12 @@ std::string RadiosityPass::summary() const {
                 std::to_string(g->cache_points()) + " cache points)";
     else
         line += ", gather " + seconds(gather_seconds_) + " (" + std::to_string(gathered_) +
-                " vertices)";
+                " vertices" +
+                (receivers_ && receivers_->split
+                     ? ", " + std::to_string(receivers_->split) + " elements split, " +
+                           std::to_string(receivers_->added_vertices()) + " vertices added"
+                     : std::string()) +
+                ")";
     return line;
 }
 

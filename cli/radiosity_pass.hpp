@@ -10,6 +10,7 @@
 #include "render/indirect_light.hpp"
 #include "render/radiosity/display.hpp"
 #include "render/radiosity/options.hpp"
+#include "render/radiosity/receivers.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/scene_solution.hpp"
 #include "render/render.hpp"
@@ -37,6 +38,8 @@ public:
     std::string summary() const;
 
     bool reused() const { return reused_; }
+    // The preview's receiving elements (null with the gather display).
+    const render::radiosity::ReceiverMesh* receivers() const { return receivers_.get(); }
     const render::radiosity::Solution* solution() const {
         return solution_ ? &*solution_ : nullptr;
     }
@@ -46,7 +49,7 @@ private:
     std::unique_ptr<render::Intersector> intersector_;
     std::unique_ptr<render::radiosity::SceneMesh> mesh_;
     std::optional<render::radiosity::Solution> solution_;
-    std::vector<glm::dvec3> shown_;  // G after the final gather for this view
+    std::unique_ptr<render::radiosity::ReceiverMesh> receivers_;  // G shown in this view
     size_t gathered_ = 0;            // vertex sides gathered for this view
     double gather_seconds_ = 0;
     std::unique_ptr<render::IndirectLight> display_;

@@ -39,16 +39,19 @@ glm::dvec3 interpolate_at(const SceneMesh& mesh, const std::vector<glm::dvec3>& 
 
 class Preview final : public IndirectLight {
 public:
-    Preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G, const DisplaySettings& s)
-        : mesh_(mesh), G_(G), s_(s) {}
+    Preview(const SceneMesh& mesh, const ReceiverMesh& receivers, const DisplaySettings& s)
+        : mesh_(mesh), receivers_(receivers), s_(s) {}
     glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
-        glm::dvec3 g;
-        return interpolate(mesh_, G_, hit, normal, g) ? apply_knobs(s_, g) : glm::dvec3(0);
+        glm::dvec3 bary;
+        const long e = element_at(mesh_, hit, normal, bary);
+        if (e < 0) return glm::dvec3(0);
+        const uint32_t side = glm::dot(normal, mesh_.elements[size_t(e)].normal) > 0 ? 0 : 1;
+        return apply_knobs(s_, receivers_.value(e, bary, side));
     }
 
 private:
     const SceneMesh& mesh_;
-    const std::vector<glm::dvec3>& G_;
+    const ReceiverMesh& receivers_;
     DisplaySettings s_;
 };
 
@@ -225,9 +228,9 @@ bool interpolate(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, c
     return true;
 }
 
-std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G,
+std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const ReceiverMesh& receivers,
                                             const DisplaySettings& settings) {
-    return std::make_unique<Preview>(mesh, G, settings);
+    return std::make_unique<Preview>(mesh, receivers, settings);
 }
 
 std::unique_ptr<IndirectLight> make_gather(const scene::Scene& scene, const SceneMesh& mesh,

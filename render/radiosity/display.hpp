@@ -9,6 +9,7 @@
 
 #include "render/indirect_light.hpp"
 #include "render/intersector.hpp"
+#include "render/radiosity/receivers.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/scene_solution.hpp"
 #include "scene/scene.hpp"
@@ -41,8 +42,9 @@ public:
     virtual double gather_seconds() const = 0;  // summed over threads
 };
 
-// `G` per vertex side (e.g. final_gather's), interpolated over the element hit.
-std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const std::vector<glm::dvec3>& G,
+// The receivers' G, interpolated over the (split) element hit; `receivers` must outlive the
+// result.
+std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const ReceiverMesh& receivers,
                                             const DisplaySettings& settings);
 
 // `geometry`, `mesh`, `solution` and `scene` must outlive the result.

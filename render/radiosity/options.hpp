@@ -10,6 +10,16 @@ enum class Method { Auto, Matrix, Jacobi, GaussSeidel, Progressive };
 enum class FormFactorMethod { RayCast, Analytic, Hemicube };
 enum class DisplayMode { Gather, Preview };
 
+// Adaptive subdivision of the receiving elements (receivers.hpp).
+struct SubdivisionOptions {
+    bool enabled = true;
+    // An element splits when two corners' G differ (largest channel) by more than
+    // `tolerance` × (their mean + 1/10 of the mean G the camera sees).
+    double tolerance = 0.2;
+    double min_element = 0;  // no split below this edge length; 0: patch size / 8
+    double budget = 0.5;     // new vertices at most this × the vertex sides gathered
+};
+
 struct RadiosityOptions {
     std::optional<bool> enabled;   // Radiosity=on/off; unset: on when the scene has a block
     Method method = Method::Auto;  // auto: Jacobi when bounce-limited, else by patch count
@@ -17,9 +27,10 @@ struct RadiosityOptions {
     double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
     FormFactorMethod form_factors = FormFactorMethod::RayCast;
     int ff_rays = 16;              // rays per vertex side for the form factors of the solve
-    int hemicube_res = 128;
+    int hemicube_res = 8;   // top face res x res, sides res x res/2: 192 rays at 8
     std::optional<int> gather_rays;     // final gather rays; unset: from the scene's count
     std::optional<double> cache_error;  // unset: from the scene's error_bound
+    SubdivisionOptions subdivision;
     DisplayMode display = DisplayMode::Preview;  // gather needs a small cache error: slower
     double tolerance = 1e-4;  // stop of the iterative and progressive solvers (relative)
     // POV's +RF keys, here meaning the patch solution (not POV's irradiance cache).

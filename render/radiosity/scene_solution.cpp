@@ -16,41 +16,18 @@
 #include "render/lights.hpp"
 #include "render/radiosity/ray_cast.hpp"
 #include "render/radiosity/solver.hpp"
+#include "render/radiosity/vertex_rays.hpp"
 #include "render/shadows.hpp"
 
 namespace lumen::render::radiosity {
 
 namespace {
 
-constexpr double kMinDepth = 1e-4;  // as the tracer: nearer hits are ignored
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// Where the gathers and light samples of a vertex side start: a hair inside the adjacent
-// elements (off shared edges and corners).
-glm::dvec3 gather_origin(const SceneMesh& mesh, const MeshVertex& v) {
-    return v.position + v.inward * (1e-3 * mesh.patch_size);
-}
-
-glm::dvec3 side_normal(const MeshVertex& v, size_t side) { return side ? -v.normal : v.normal; }
-
-bool needs_light(const MeshVertex& v) {
-    return v.rho.x > 0 || v.rho.y > 0 || v.rho.z > 0;
-}
-
-// Nearest hit that radiosity sees (no_radiosity objects are skipped).
-bool radiosity_hit(const Intersector& geometry, const Ray& ray, Hit& hit) {
-    double t_min = kMinDepth;
-    for (int i = 0; i < 64; ++i) {
-        if (!geometry.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
-            return false;
-        if (!hit.no_radiosity) return true;
-        t_min = hit.t;
-    }
-    return false;
-}
 
 }  // namespace
 
@@ -126,81 +103,6 @@ std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh&
     return H;
 }
 
-namespace {
-
-// Casts `rays` stratified cosine-weighted rays from a vertex side (deterministic per side):
-// on_hit(unknown, weight) for each vertex of the element a ray lands on (barycentric share
-// of 1/rays), on_miss(direction) for rays that escape.
-template <class OnHit, class OnMiss>
-void cast_gather(const SceneMesh& mesh, const Intersector& geometry, size_t u, int rays,
-                 OnHit&& on_hit, OnMiss&& on_miss) {
-    const MeshVertex& mv = mesh.vertices[u / 2];
-    const glm::dvec3 origin = gather_origin(mesh, mv);
-    const glm::dvec3 n_side = side_normal(mv, u % 2);
-    const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
-    const double w = 1.0 / (cells * cells);
-    std::mt19937_64 rng(0x9e3779b97f4a7c15ULL * (u + 1));
-    std::uniform_real_distribution<double> U(0.0, 1.0);
-    for (int i = 0; i < cells; ++i)
-        for (int j = 0; j < cells; ++j) {
-            const glm::dvec3 dir =
-                cosine_direction(n_side, (i + U(rng)) / cells, (j + U(rng)) / cells);
-            Hit hit;
-            if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
-                on_miss(dir, w);
-                continue;
-            }
-            glm::dvec3 bary;
-            const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
-            if (e < 0) continue;  // an object without elements: absorbs
-            const MeshElement& el = mesh.elements[size_t(e)];
-            const uint32_t hit_side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
-            for (int k = 0; k < 3; ++k)
-                if (bary[k] > 0) on_hit(2 * el.v[k] + hit_side, w * bary[k]);
-        }
-}
-
-}  // namespace
-
-VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
-                                      const Intersector& geometry, int rays, int threads) {
-    const size_t n = mesh.unknowns();
-    std::vector<std::vector<std::pair<uint32_t, float>>> rows(n);
-    VertexFormFactors F;
-    F.env.assign(n, glm::dvec3(0));
-    parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
-        std::vector<std::pair<uint32_t, float>> entries;
-        for (size_t v = begin; v < end; ++v) {
-            if (!needs_light(mesh.vertices[v])) continue;  // ρ = 0: G is never used
-            for (size_t u = 2 * v; u < 2 * v + 2; ++u) {
-                entries.clear();
-                cast_gather(
-                    mesh, geometry, u, rays,
-                    [&](uint32_t col, double w) { entries.emplace_back(col, float(w)); },
-                    [&](const glm::dvec3& dir, double w) {
-                        F.env[u] += w * background_radiance(scene, dir);
-                    });
-                std::sort(entries.begin(), entries.end());
-                auto& row = rows[u];
-                for (const auto& [c, x] : entries) {
-                    if (!row.empty() && row.back().first == c) row.back().second += x;
-                    else row.emplace_back(c, x);
-                }
-            }
-        }
-    });
-    F.start.reserve(n + 1);
-    F.start.push_back(0);
-    for (const auto& row : rows) {
-        for (const auto& [c, x] : row) {
-            F.col.push_back(c);
-            F.weight.push_back(x);
-        }
-        F.start.push_back(uint32_t(F.col.size()));
-    }
-    return F;
-}
-
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
                                 const CameraModel& camera, int width, int height) {
     std::vector<char> seen(mesh.unknowns(), 0);
@@ -221,23 +123,22 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
     return seen;
 }
 
-std::vector<glm::dvec3> final_gather(const scene::Scene& scene, const SceneMesh& mesh,
-                                     const Intersector& geometry,
-                                     const std::vector<glm::dvec3>& B,
-                                     const std::vector<char>& wanted, int rays, int threads,
-                                     const std::vector<glm::dvec3>& fallback) {
-    std::vector<glm::dvec3> G = fallback;
-    parallel_for(mesh.unknowns(), threads, [&](size_t begin, size_t end) {
-        for (size_t u = begin; u < end; ++u) {
-            if (!wanted[u] || !needs_light(mesh.vertices[u / 2])) continue;
-            glm::dvec3 g(0);
-            cast_gather(
-                mesh, geometry, u, rays, [&](uint32_t col, double w) { g += w * B[col]; },
-                [&](const glm::dvec3& dir, double w) { g += w * background_radiance(scene, dir); });
-            G[u] = g;
-        }
-    });
-    return smooth(mesh, G);
+GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
+                          const Intersector& geometry, const std::vector<glm::dvec3>& B,
+                          const glm::dvec3& origin, const glm::dvec3& normal, int rays,
+                          uint64_t seed) {
+    GatherResult r;
+    double inv_dist = 0, weight = 0;
+    cast_rays(
+        mesh, geometry, origin, normal, seed, rays,
+        [&](long, uint32_t col, double w, double t) {
+            r.G += w * B[col];
+            inv_dist += w / std::max(t, 1e-9);
+            weight += w;
+        },
+        [&](const glm::dvec3& dir, double w) { r.G += w * background_radiance(scene, dir); });
+    r.harmonic_distance = inv_dist > 0 ? weight / inv_dist : INFINITY;
+    return r;
 }
 
 namespace {
@@ -290,30 +191,12 @@ void check_reflectance(const SceneMesh& mesh, std::vector<std::string>& warnings
 
 }  // namespace
 
-// One pass of neighbour averaging over the vertices sharing an element (same side): the
-// indirect term is smooth away from contacts, and this cuts the per-vertex ray noise.
-std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dvec3>& G) {
-    std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
-    std::vector<double> weight(G.size(), 0.0);
-    for (const MeshElement& e : mesh.elements)
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                for (uint32_t side = 0; side < 2; ++side) {
-                    const double w = a == b ? 1.0 : 0.5;  // a vertex is in several elements
-                    sum[2 * e.v[a] + side] += w * G[2 * e.v[b] + side];
-                    weight[2 * e.v[a] + side] += w;
-                }
-    std::vector<glm::dvec3> out(G.size());
-    for (size_t u = 0; u < G.size(); ++u) out[u] = weight[u] > 0 ? sum[u] / weight[u] : G[u];
-    return out;
-}
-
 Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const RadiosityOptions& options, int threads,
                      SolveInfo& info) {
     auto t0 = std::chrono::steady_clock::now();
     const std::vector<glm::dvec3> H = direct_light(scene, mesh, geometry, threads);
-    const VertexFormFactors F = vertex_form_factors(scene, mesh, geometry, options.ff_rays, threads);
+    const VertexFormFactors F = vertex_form_factors(scene, mesh, geometry, options, threads);
     info.form_factor_seconds = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     check_reflectance(mesh, info.warnings);

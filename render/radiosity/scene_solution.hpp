@@ -54,25 +54,42 @@ glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3& dir)
 std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh& mesh,
                                      const Intersector& geometry, int threads);
 
-// Ray-cast vertex form factors with `rays` stratified cosine rays per vertex side.
+// Vertex form factors by the options' method (scene_form_factors.cpp): `raycast`
+// (ff_rays stratified cosine rays per vertex side), `analytic` (Lambert's point-to-polygon
+// value with sampled visibility for emitters and the elements within two patch sizes, rays
+// for the rest) or `hemicube` (hemicube_res, cast through the scene; the baseline).
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
-                                      const Intersector& geometry, int rays, int threads);
+                                      const Intersector& geometry,
+                                      const RadiosityOptions& options, int threads);
 
 // Which vertex sides the camera sees (one primary ray per pixel).
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
                                 const CameraModel& camera, int width, int height);
 
-// The final gather at the `wanted` vertex sides: G = F B + G_env with `rays` rays each (F is
-// not stored); the others keep `fallback`. Smoothed once over each vertex's neighbours (the
-// indirect term is smooth away from contacts; this cuts the per-vertex ray noise).
-std::vector<glm::dvec3> final_gather(const scene::Scene& scene, const SceneMesh& mesh,
-                                     const Intersector& geometry,
-                                     const std::vector<glm::dvec3>& B,
-                                     const std::vector<char>& wanted, int rays, int threads,
-                                     const std::vector<glm::dvec3>& fallback);
+// Where the gathers and light samples of a vertex side start: a hair inside the adjacent
+// elements (off shared edges and corners).
+inline glm::dvec3 gather_origin(const SceneMesh& mesh, const MeshVertex& v) {
+    return v.position + v.inward * (1e-3 * mesh.patch_size);
+}
+inline glm::dvec3 side_normal(const MeshVertex& v, size_t side) {
+    return side ? -v.normal : v.normal;
+}
+inline bool needs_light(const MeshVertex& v) { return v.rho.x > 0 || v.rho.y > 0 || v.rho.z > 0; }
+// The ray seed of unknown u's gathers (deterministic per vertex side).
+inline uint64_t side_seed(size_t u) { return 0x9e3779b97f4a7c15ULL * (u + 1); }
 
-// One pass of neighbour averaging over the vertices that share an element (same side).
-std::vector<glm::dvec3> smooth(const SceneMesh& mesh, const std::vector<glm::dvec3>& G);
+struct GatherResult {
+    glm::dvec3 G{0};
+    double harmonic_distance = 0;  // of the rays that hit (infinite when none did)
+};
+
+// Incident light at a point: `rays` stratified cosine rays from `origin` about the unit
+// `normal` (deterministic for `seed`); a hit returns B interpolated over the element it lands
+// on, a miss the background.
+GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
+                          const Intersector& geometry, const std::vector<glm::dvec3>& B,
+                          const glm::dvec3& origin, const glm::dvec3& normal, int rays,
+                          uint64_t seed);
 
 // The whole solution: direct light, form factors and the solve the options ask for.
 Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,

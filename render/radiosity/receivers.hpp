@@ -1,0 +1,72 @@
+// The receiving side of the solution (radiosity-notes.md §5.3, §5.6): the patches of the scene
+// mesh shoot (their B is the solve's), and finer elements receive. The final gather runs at
+// the vertices the camera sees; elements whose gathered G differs between corners by more
+// than a tolerance split in four (edge midpoints), down to a minimum size and within a vertex
+// budget, and the new vertices gather from the unchanged B. Splits leave T-junctions
+// (a split element beside an unsplit one): the unsplit side is shown as if split too, its
+// missing midpoints interpolated from their edges, so the preview has no cracks.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/intersector.hpp"
+#include "render/radiosity/options.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render::radiosity {
+
+class ReceiverMesh {
+public:
+    // A triangle of vertex indices (scene mesh vertices first, then midpoints).
+    struct Triangle {
+        std::array<uint32_t, 3> v{};
+        uint8_t sides = 0;  // bit s: side s is gathered (seen by the camera)
+        uint8_t depth = 0;  // splits above it
+    };
+
+    explicit ReceiverMesh(const SceneMesh& mesh);
+
+    // The midpoint of edge (a, b), created (on the first call, offset into the triangle
+    // whose third corner is `c` for its gathers) when it does not exist yet.
+    uint32_t midpoint(uint32_t a, uint32_t b, uint32_t c);
+    size_t vertex_count() const { return positions_.size(); }
+    size_t added_vertices() const { return positions_.size() - mesh_.vertices.size(); }
+    const glm::dvec3& position(uint32_t v) const { return positions_[v]; }
+
+    // G at barycentric `bary` of scene mesh element `element` on `side`: descends through
+    // the splits (real, or implied by a neighbour's midpoints) to a leaf and interpolates.
+    glm::dvec3 value(long element, const glm::dvec3& bary, uint32_t side) const;
+
+    std::vector<glm::dvec3> G;         // per vertex side (2 v + side)
+    std::vector<Triangle> leaves;      // the elements after splitting
+    size_t split = 0;                  // elements split
+
+    // Where the gathers of vertex v start and its front (side 0) normal.
+    const glm::dvec3& origin(uint32_t v) const { return origins_[v]; }
+    const glm::dvec3& normal(uint32_t v) const { return normals_[v]; }
+
+private:
+    const SceneMesh& mesh_;
+    std::vector<glm::dvec3> positions_, normals_, origins_;  // origins_: where gathers start
+    std::unordered_map<uint64_t, uint32_t> midpoints_;       // edge (lo, hi) -> vertex
+};
+
+// The final gather at the `wanted` vertex sides with `rays` rays each against the solution's
+// B (the others keep `fallback`), the adaptive subdivision, and one pass of neighbour
+// smoothing over the resulting triangles (it cuts the per-vertex ray noise).
+ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
+                     const Intersector& geometry, const std::vector<glm::dvec3>& B,
+                     const std::vector<char>& wanted, int rays, int threads,
+                     const std::vector<glm::dvec3>& fallback,
+                     const SubdivisionOptions& options);
+
+// One pass of neighbour averaging over the vertices sharing a triangle (same side).
+std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,
+                               const std::vector<glm::dvec3>& G);
+
+}  // namespace lumen::render::radiosity

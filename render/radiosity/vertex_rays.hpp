@@ -1,0 +1,68 @@
+// The rays of a vertex gather (internal to render/radiosity): where a ray from a vertex side
+// lands on the scene mesh, for the form factors, the final gather and the gather display.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <glm/geometric.hpp>
+
+#include "render/intersector.hpp"
+#include "render/radiosity/ray_cast.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+
+namespace lumen::render::radiosity {
+
+inline constexpr double kMinDepth = 1e-4;  // as the tracer: nearer hits are ignored
+
+// Nearest hit that radiosity sees (no_radiosity objects are skipped).
+inline bool radiosity_hit(const Intersector& geometry, const Ray& ray, Hit& hit) {
+    double t_min = kMinDepth;
+    for (int i = 0; i < 64; ++i) {
+        if (!geometry.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
+            return false;
+        if (!hit.no_radiosity) return true;
+        t_min = hit.t;
+    }
+    return false;
+}
+
+// One ray of weight w: on_hit(element, unknown, share, t) for each vertex of the element it
+// lands on (barycentric share of w), on_miss(direction, w) when it escapes; a hit on an
+// object without elements absorbs.
+template <class OnHit, class OnMiss>
+void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
+               const glm::dvec3& dir, double w, OnHit&& on_hit, OnMiss&& on_miss) {
+    Hit hit;
+    if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
+        on_miss(dir, w);
+        return;
+    }
+    glm::dvec3 bary;
+    const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
+    if (e < 0) return;
+    const MeshElement& el = mesh.elements[size_t(e)];
+    const uint32_t side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
+    for (int k = 0; k < 3; ++k)
+        if (bary[k] > 0) on_hit(e, 2 * el.v[k] + side, w * bary[k], hit.t);
+}
+
+// `rays` stratified cosine-weighted rays (rounded to a square) from `origin` about the unit
+// `normal`, deterministic for `seed`, each of weight 1/rays.
+template <class OnHit, class OnMiss>
+void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
+               const glm::dvec3& normal, uint64_t seed, int rays, OnHit&& on_hit,
+               OnMiss&& on_miss) {
+    const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
+    const double w = 1.0 / (cells * cells);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j) {
+            const glm::dvec3 dir =
+                cosine_direction(normal, (i + U(rng)) / cells, (j + U(rng)) / cells);
+            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss);
+        }
+}
+
+}  // namespace lumen::render::radiosity
