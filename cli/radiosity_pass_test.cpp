@@ -147,5 +147,53 @@ TEST(RadiosityPass, ReflectanceAtLeastOneIsReported) {
     for (const glm::dvec3& g : pass.solution()->G) ASSERT_TRUE(std::isfinite(g.x + g.y + g.z));
 }
 
+// The three form factor methods on a scene mesh agree on the indirect light: ray casting
+// with many rays is the reference; analytic (Lambert plus visibility near the vertex) and the
+// hemicube must land within a few percent of it, and the +V line names the method.
+TEST(RadiosityPass, FormFactorMethodsAgreeOnAScene) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources, room(-5));
+    auto mean_G = [&](render::radiosity::FormFactorMethod m, int rays, int res, std::string& line) {
+        RadiosityPass pass;
+        std::vector<std::string> log;
+        auto o = small();
+        o.form_factors = m;
+        o.ff_rays = rays;
+        o.hemicube_res = res;
+        o.bounces = 3;
+        o.patch_size = 0.5;
+        EXPECT_NE(pass.prepare(s, o, view(), log), nullptr);
+        for (const std::string& l : log) EXPECT_EQ(l.find("not available"), std::string::npos);
+        line = pass.summary();
+        // Over the vertex sides of the floor's top and the ceiling's underside that face
+        // into the room (not the boxes' insides, where thin-box corners leak).
+        const auto mesh = render::radiosity::build_scene_mesh(s, o.patch_size);
+        double sum = 0;
+        int n = 0;
+        for (size_t u = 0; u < mesh.unknowns(); ++u) {
+            const auto& v = mesh.vertices[u / 2];
+            const glm::dvec3 normal = u % 2 ? -v.normal : v.normal;
+            const bool face = std::fabs(v.position.y) < 1e-9 || std::fabs(v.position.y - 2) < 1e-9;
+            if (!face || std::max(std::fabs(v.position.x), std::fabs(v.position.z)) > 1.99 ||
+                normal.y * (1 - v.position.y) <= 0)
+                continue;
+            sum += pass.solution()->G[u].x;
+            ++n;
+        }
+        EXPECT_GT(n, 20);
+        return sum / n;
+    };
+    using F = render::radiosity::FormFactorMethod;
+    std::string line;
+    const double reference = mean_G(F::RayCast, 1024, 0, line);
+    EXPECT_GT(reference, 0.01);
+    const double analytic = mean_G(F::Analytic, 64, 0, line);
+    EXPECT_NE(line.find("(analytic 64 rays)"), std::string::npos) << line;
+    EXPECT_NEAR(analytic / reference, 1.0, 0.03);
+    const double cube = mean_G(F::Hemicube, 0, 24, line);
+    EXPECT_NE(line.find("(hemicube resolution 24)"), std::string::npos) << line;
+    EXPECT_NEAR(cube / reference, 1.0, 0.03);
+}
+
 }  // namespace
 }  // namespace lumen::cli
