@@ -1,35 +1,12 @@
 #include "render/antialias.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
+
+#include "render/jitter.hpp"
 
 namespace lumen::render {
 namespace {
-
-// H: a fixed permutation of 0..4095 built by the shuffle of §8.4.
-std::array<int, 4096> make_permutation() {
-    std::array<int, 4096> h{};
-    for (int i = 0; i < 4096; ++i) h[i] = i;
-    int32_t r = 0;
-    for (int i = 4095; i >= 0; --i) {
-        r = int32_t(uint32_t(r) * 1812433253u + 12345u);
-        const int j = ((r >> 16) & 0x7FFF) % 4096;
-        std::swap(h[i], h[j]);
-    }
-    return h;
-}
-
-// lumen's jitter table: 256 values spread evenly over [−0.5, 0.5) in a scrambled order.
-std::array<double, 256> make_jitter_table() {
-    std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[i] = ((i * 167 + 13) % 256) / 256.0 - 0.5;
-    return t;
-}
-
-const std::array<int, 4096> kHash = make_permutation();
-const std::array<double, 256> kJitter = make_jitter_table();
 
 void put(Image& image, int x, int y, const Sample& s) {
     float* p = image.at(x, y);
@@ -45,13 +22,6 @@ double srgb_decode(double v) {
 }
 
 }  // namespace
-
-void jitter2d(double x, double y, double& jx, double& jy) {
-    const int ix1 = int(x * 1021), iy1 = int(y * 1019);
-    const int ix2 = int(x * 1019), iy2 = int(y * 1021);
-    jx = kJitter[kHash[(kHash[ix1 & 4095] ^ iy1) & 4095] & 255];
-    jy = kJitter[kHash[(kHash[ix2 & 4095] ^ iy2) & 4095] & 255];
-}
 
 glm::dvec4 ColourCompare::encode(const Sample& s) const {
     auto e = [&](double v) {

@@ -1,7 +1,7 @@
 // Rendering one block of pixels, with POV-Ray's anti-aliasing methods (povray-semantics.md §8):
 // none (one ray through each pixel centre), AM1 (non-recursive adaptive, block framed) and
-// AM2 (recursive adaptive over pixel corners). Blocks are independent, so the image does not
-// depend on the thread count or block order.
+// AM2 (recursive adaptive over pixel corners), with POV's jitter (render/jitter.hpp). Blocks are
+// independent, so the image does not depend on the thread count or block order.
 #pragma once
 #include <vector>
 
@@ -18,13 +18,6 @@ struct Sample {
     glm::dvec3 rgb{0};
     double t = 0;
 };
-
-// The deterministic jitter POV uses for anti-aliasing sub-samples: a hash of the sample
-// position into [−0.5, 0.5)². The hash structure (1021/1019 multipliers, the 4096-entry
-// permutation) follows §8.4; the 256 jitter values themselves are lumen's own fixed table
-// (POV-Ray's table is source data we do not copy), so jittered images are reproducible but
-// not identical to POV-Ray's. `-J` renders are exact.
-void jitter2d(double x, double y, double& jx, double& jy);
 
 // How colours are compared for anti-aliasing: through c^(1/aa_gamma) of linear values.
 struct ColourCompare {
