@@ -91,42 +91,43 @@ lumen_run() {  # method options...
     record lumen "$method" "$*" "$work/$name.png" "$wall" "$cpu"
 }
 
-# lumen over its methods (README "Radiosity"): mesh size with the preview and the gather
-# display, the gather's cache error and rays, the solver, and the form-factor rays. The series
-# name says what varies. (The renderer computes form factors by ray casting whatever
-# Radiosity_Form_Factors says; the library sweep compares the methods.)
+# lumen over its methods (README "Radiosity"): mesh size with the preview (adaptive
+# subdivision on, the default, and off), the preview's gather rays, the form-factor methods,
+# the gather display's cache error and the solver. The series name says what varies.
 lumen_sweep() {
     local v
-    local sizes=(16 8 4 2 1.5) gather_sizes=(8 4 2) errors=(0.3 0.2 0.1 0.05) gathers=(50 200 800)
-    local solvers=(jacobi matrix gauss_seidel progressive) rays=(32 128 1024)
+    local sizes=(16 8 4 2.5 1.5) off_sizes=(8 4 2.5 1.5) gathers=(130 520 1040)
+    local errors=(0.1 0.05 0.03) solvers=(jacobi matrix gauss_seidel progressive)
+    local methods=("Radiosity_Form_Factors=raycast Radiosity_FF_Rays=64"
+                   "Radiosity_Form_Factors=analytic" "Radiosity_Form_Factors=hemicube")
     if [ $quick = 1 ]; then
-        sizes=(8) gather_sizes=(4) errors=() gathers=() solvers=(matrix) rays=(64)
+        sizes=(8) off_sizes=(8) gathers=(520) errors=(0.1) solvers=(matrix)
+        methods=("Radiosity_Form_Factors=analytic")
     fi
     for v in "${sizes[@]}"; do
         lumen_run "lumen preview: patch size" Radiosity_Display=preview Radiosity_Patch_Size=$v
     done
-    for v in "${gather_sizes[@]}"; do
-        lumen_run "lumen gather: patch size" Radiosity_Display=gather Radiosity_Patch_Size=$v
-    done
-    for v in "${errors[@]}"; do
-        lumen_run "lumen gather: cache error" Radiosity_Display=gather Radiosity_Patch_Size=2 \
-            Radiosity_Cache_Error=$v
+    for v in "${off_sizes[@]}"; do
+        lumen_run "lumen preview, no subdivision: patch size" Radiosity_Display=preview \
+            Radiosity_Subdivide=off Radiosity_Patch_Size=$v
     done
     for v in "${gathers[@]}"; do
-        lumen_run "lumen gather: rays" Radiosity_Display=gather Radiosity_Patch_Size=4 \
-            Radiosity_Cache_Error=0.2 Radiosity_Gather_Rays=$v
+        lumen_run "lumen preview: gather rays" Radiosity_Display=preview Radiosity_Gather_Rays=$v
+    done
+    for v in "${methods[@]}"; do
+        # shellcheck disable=SC2086  # two options in one entry
+        lumen_run "lumen preview: form factors" Radiosity_Display=preview $v
+    done
+    for v in "${errors[@]}"; do
+        lumen_run "lumen gather: cache error (576 rays)" Radiosity_Display=gather \
+            Radiosity_Cache_Error=$v Radiosity_Gather_Rays=576
     done
     # jacobi stops after the scene's recursion_limit bounces as POV does; the others converge.
     for v in "${solvers[@]}"; do
         lumen_run "lumen preview: solver" Radiosity_Display=preview Radiosity_Patch_Size=8 \
             Radiosity_Method=$v
     done
-    for v in "${rays[@]}"; do
-        lumen_run "lumen preview: FF rays" Radiosity_Display=preview Radiosity_Patch_Size=8 \
-            Radiosity_FF_Rays=$v
-    done
 }
-
 # Error against time, log-log, one series per distinct value of the method column (each
 # series sorted by time into its own file, so its points join up).
 plot() {  # csv png title method-column x-column y-column xlabel ylabel [extra plot clause]

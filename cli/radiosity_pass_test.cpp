@@ -195,5 +195,48 @@ TEST(RadiosityPass, FormFactorMethodsAgreeOnAScene) {
     EXPECT_NEAR(cube / reference, 1.0, 0.03);
 }
 
+// The gather display (per-pixel gathers through the irradiance cache) and the preview show
+// the same indirect light on the ceiling, lit only indirectly, within their ray noise.
+TEST(RadiosityPass, GatherDisplayAgreesWithThePreview) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources, room(-5));
+    render::Geometry geometry(s);
+    render::ThreadState state;
+    auto ceiling_mean = [&](render::radiosity::DisplayMode mode, size_t& cache_points) {
+        RadiosityPass pass;
+        std::vector<std::string> log;
+        auto o = small();
+        o.display = mode;
+        o.gather_rays = 1024;
+        o.cache_error = 0.1;
+        o.patch_size = 0.25;  // fine: the preview's linear interpolation flattens the peak
+        const render::IndirectLight* light = pass.prepare(s, o, view(), log);
+        EXPECT_NE(light, nullptr);
+        double sum = 0;
+        int n = 0;
+        for (double x = -0.24; x <= 0.25; x += 0.04)
+            for (double z = -0.24; z <= 0.25; z += 0.04) {
+                render::Hit hit;
+                EXPECT_TRUE(geometry.intersect(render::Ray{{x, 1, z}, {0, 1, 0}}, 1e-4, 1e9, hit));
+                const glm::dvec3 g = light->incident(hit, {0, -1, 0}, state);
+                EXPECT_TRUE(std::isfinite(g.x + g.y + g.z));
+                sum += g.x;
+                ++n;
+            }
+        const auto* stats = dynamic_cast<const render::radiosity::GatherStats*>(light);
+        cache_points = stats ? stats->cache_points() : 0;
+        return sum / n;
+    };
+    size_t preview_points = 0, gather_points = 0;
+    const double preview = ceiling_mean(render::radiosity::DisplayMode::Preview, preview_points);
+    const double gather = ceiling_mean(render::radiosity::DisplayMode::Gather, gather_points);
+    EXPECT_GT(preview, 0.05);
+    EXPECT_NEAR(gather / preview, 1.0, 0.05);
+    EXPECT_EQ(preview_points, 0u);
+    // 169 lookups reuse records: far fewer gathers than points.
+    EXPECT_GT(gather_points, 0u);
+    EXPECT_LT(gather_points, 60u);
+}
+
 }  // namespace
 }  // namespace lumen::cli

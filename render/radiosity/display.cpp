@@ -7,20 +7,16 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <random>
 #include <mutex>
 #include <shared_mutex>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
 
-#include "render/radiosity/ray_cast.hpp"
 
 namespace lumen::render::radiosity {
 
 namespace {
-
-constexpr double kMinDepth = 1e-4;
 
 // The element a surface hit lies on: a short probe along the normal through the hit point.
 long element_at(const SceneMesh& mesh, const Hit& hit, const glm::dvec3& normal,
@@ -55,25 +51,37 @@ private:
     DisplaySettings s_;
 };
 
+// How far past the cache error a record still contributes to the average (faded).
+constexpr double kFade = 3;
+
 // One irradiance cache record (Ward 1988, without gradients, as POV).
 struct CachePoint {
     glm::dvec3 position, normal, G;
     double radius;  // harmonic mean distance, clamped
 };
 
+// The per-pixel final gather through an irradiance cache. A point reuses the records whose
+// Ward error e = |d|/R + sqrt(1 − n·n') is below the cache error a, else it gathers a new
+// one; its value is the average of every record with e < 3a, weighted (1 − e/3a)², so the
+// weights fade to 0 at the edge of a record's reach: no seams where the set of records
+// changes, and each value averages several records' ray noise. (Plain Ward weights 1/e over
+// e < a gave blotches and per-record noise: cornell MAE 0.0033 at a = 0.05, now 0.0025.)
 class Gather final : public IndirectLight, public GatherStats {
 public:
     Gather(const scene::Scene& scene, const SceneMesh& mesh, const Solution& sol,
            const Intersector& geometry, const DisplaySettings& s)
         : scene_(scene), mesh_(mesh), sol_(sol), geometry_(geometry), s_(s) {
-        const double reach = s_.cache_error * s_.max_reuse *
+        const double reach = kFade * s_.cache_error * s_.max_reuse *
                              std::max(1.0, glm::length(mesh.bounds.hi - s_.camera));
         cell_ = std::max(reach / 2, 1e-6);
     }
 
     glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
         glm::dvec3 g;
-        if (!lookup(hit.point, normal, g)) g = gather(hit.point, normal);
+        if (!lookup(hit.point, normal, g)) {
+            const glm::dvec3 fresh = gather(hit.point, normal);
+            if (!lookup(hit.point, normal, g)) g = fresh;
+        }
         return apply_knobs(s_, g);
     }
 
@@ -95,14 +103,15 @@ private:
                 (long long)std::floor(p.z / cell_)};
     }
 
-    // Ward's weighted average of the valid records (weight > 1/a).
+    // The faded average of the records within 3a; false when none is within a (gather).
     bool lookup(const glm::dvec3& p, const glm::dvec3& n, glm::dvec3& out) const {
         std::shared_lock lock(mutex_);
         const auto it = grid_.find(cell_of(p));
         if (it == grid_.end()) return false;
         glm::dvec3 sum(0);
         double wsum = 0;
-        const double limit = 1 / s_.cache_error;
+        bool covered = false;
+        const double a = s_.cache_error;
         for (uint32_t i : it->second) {
             const CachePoint& c = points_[i];
             const double nd = glm::dot(n, c.normal);
@@ -110,41 +119,33 @@ private:
             const glm::dvec3 d = p - c.position;
             if (std::fabs(glm::dot(d, n)) > 0.1 * c.radius) continue;  // other surface
             const double e = glm::length(d) / c.radius + std::sqrt(std::max(0.0, 1 - nd));
-            const double w = e > 0 ? 1 / e : 1e30;
-            if (w <= limit) continue;
+            if (e >= kFade * a) continue;
+            covered = covered || e < a;
+            const double w = (1 - e / (kFade * a)) * (1 - e / (kFade * a));
             sum += w * c.G;
             wsum += w;
         }
-        if (wsum <= 0) return false;
+        if (!covered || wsum <= 0) return false;
         out = sum / wsum;
         return true;
     }
 
     glm::dvec3 gather(const glm::dvec3& p, const glm::dvec3& n) const {
         const auto t0 = std::chrono::steady_clock::now();
-        const int cells = std::max(1, int(std::lround(std::sqrt(double(s_.gather_rays)))));
         // Deterministic per point, whichever thread gets here first.
         uint64_t seed = 0x9e3779b97f4a7c15ULL;
-        for (double x : {p.x, p.y, p.z, n.x, n.y, n.z}) seed = seed * 1099511628211ULL ^ std::hash<double>{}(x);
-        std::mt19937_64 rng(seed);
-        std::uniform_real_distribution<double> U(0.0, 1.0);
-        glm::dvec3 sum(0);
-        double inv_dist = 0;
-        const glm::dvec3 origin = p + n * (1e-5 * mesh_.patch_size);
-        for (int i = 0; i < cells; ++i)
-            for (int j = 0; j < cells; ++j) {
-                const glm::dvec3 dir =
-                    cosine_direction(n, (i + U(rng)) / cells, (j + U(rng)) / cells);
-                sum += radiance(origin, dir, inv_dist);
-            }
-        const int total = cells * cells;
+        for (double x : {p.x, p.y, p.z, n.x, n.y, n.z})
+            seed = seed * 1099511628211ULL ^ std::hash<double>{}(x);
+        const GatherResult r = gather_point(scene_, mesh_, geometry_, sol_.B,
+                                            p + n * (1e-5 * mesh_.patch_size), n,
+                                            s_.gather_rays, seed);
         CachePoint c;
         c.position = p;
         c.normal = n;
-        c.G = sum / double(total);
+        c.G = r.G;
         const double camera = glm::length(p - s_.camera);
-        const double harmonic = inv_dist > 0 ? total / inv_dist : 1e30;
-        c.radius = std::clamp(harmonic, s_.min_reuse * camera, s_.max_reuse * camera);
+        c.radius = std::max(
+            std::clamp(r.harmonic_distance, s_.min_reuse * camera, s_.max_reuse * camera), 1e-9);
         insert(c);
         gather_ns_ += uint64_t(std::chrono::duration<double, std::nano>(
                                    std::chrono::steady_clock::now() - t0)
@@ -152,30 +153,11 @@ private:
         return c.G;
     }
 
-    // B of the previous bounce where the ray lands; the background where it escapes.
-    glm::dvec3 radiance(const glm::dvec3& origin, const glm::dvec3& dir, double& inv_dist) const {
-        Hit hit;
-        double t_min = kMinDepth;
-        for (int k = 0; k < 64; ++k) {
-            if (!geometry_.intersect(Ray{origin, dir}, t_min,
-                                     std::numeric_limits<double>::infinity(), hit, false))
-                return background_radiance(scene_, dir);
-            if (!hit.no_radiosity) break;
-            t_min = hit.t;
-        }
-        inv_dist += 1 / std::max(hit.t, 1e-9);
-        glm::dvec3 bary;
-        const long e = mesh_.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
-        if (e < 0) return glm::dvec3(0);
-        const bool front = glm::dot(dir, mesh_.elements[size_t(e)].normal) < 0;
-        return interpolate_at(mesh_, sol_.B, e, bary, front);
-    }
-
     void insert(const CachePoint& c) const {
         std::unique_lock lock(mutex_);
         const uint32_t index = uint32_t(points_.size());
         points_.push_back(c);
-        const double r = c.radius * s_.cache_error;
+        const double r = kFade * c.radius * s_.cache_error;
         const Cell lo = cell_of(c.position - glm::dvec3(r)), hi = cell_of(c.position + glm::dvec3(r));
         for (long long x = lo[0]; x <= hi[0]; ++x)
             for (long long y = lo[1]; y <= hi[1]; ++y)
@@ -202,7 +184,9 @@ DisplaySettings display_settings(const scene::Scene& scene, const RadiosityOptio
     s.brightness = r.brightness;
     s.gray_threshold = std::clamp(r.gray_threshold, 0.0, 1.0);
     s.gather_rays = options.gather_rays ? *options.gather_rays : std::max(64, r.count * 13 / 10);
-    s.cache_error = options.cache_error ? *options.cache_error : std::max(0.05, r.error_bound);
+    // POV's error_bound is not Ward's a: a tenth of it gives about POV's cache density
+    // (cornell.pov's 0.5 -> 0.05: 20600 records at 300x300; 0.5 itself gave 519, MAE 0.010).
+    s.cache_error = options.cache_error ? *options.cache_error : std::max(0.01, r.error_bound / 10);
     s.min_reuse = r.minimum_reuse;
     s.max_reuse = std::max(r.maximum_reuse, r.minimum_reuse);
     s.camera = scene.camera.location;
