@@ -56,16 +56,16 @@ void collect(const scene::Object& o, const scene::Transform& to_world,
     out.push_back(std::move(p));
 }
 
-// Diffuse reflectance and emission of the top layer at p (POV: diffuse × pigment).
-void material_at(const scene::LayeredTexture* texture, const glm::dvec3& p, glm::dvec3& rho,
-                 glm::dvec3& emission) {
+// Diffuse reflectance, emission and brilliance of the top layer at p (POV: diffuse × pigment).
+void material_at(const scene::LayeredTexture* texture, const glm::dvec3& p, MeshVertex& v) {
     ResolvedLayers layers;
     resolve_layers(texture, p, layers);
     const ResolvedLayer& top = layers[0];
     const glm::dvec3 rgb(top.colour.r, top.colour.g, top.colour.b);
     const double opacity = 1 - top.colour.f - top.colour.t;
-    rho = glm::max(glm::dvec3(0), rgb * top.finish->diffuse * opacity);
-    emission = glm::max(glm::dvec3(0), rgb * top.finish->emission * opacity);
+    v.rho = glm::max(glm::dvec3(0), rgb * top.finish->diffuse * opacity);
+    v.emission = glm::max(glm::dvec3(0), rgb * top.finish->emission * opacity);
+    v.brilliance = top.finish->brilliance;
 }
 
 // Vertices are shared by elements of the same texture and plane orientation.
@@ -83,7 +83,7 @@ public:
             MeshVertex v;
             v.position = p;
             v.normal = n;
-            material_at(t, p, v.rho, v.emission);
+            material_at(t, p, v);
             mesh_.vertices.push_back(v);
         }
         return it->second;

@@ -23,6 +23,7 @@ struct MeshVertex {
     glm::dvec3 inward{0};        // towards the inside of the adjacent elements (unit or 0)
     glm::dvec3 rho{0};           // diffuse × pigment at the vertex
     glm::dvec3 emission{0};      // emission × pigment
+    double brilliance = 1;       // the finish's: direct light goes with cos^brilliance
     double area = 0;             // a third of the adjacent elements' area
 };
 

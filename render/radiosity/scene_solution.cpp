@@ -16,6 +16,7 @@
 #include "render/lights.hpp"
 #include "render/radiosity/ray_cast.hpp"
 #include "render/radiosity/solver.hpp"
+#include "render/radiosity/sparse_solve.hpp"
 #include "render/radiosity/vertex_rays.hpp"
 #include "render/shadows.hpp"
 
@@ -92,7 +93,8 @@ std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh&
                 for (size_t side = 0; side < 2; ++side) {
                     const double c = glm::dot(side_normal(mv, side), ls.dir);
                     if (c <= 0) continue;
-                    glm::dvec3 lc = ls.colour * c;
+                    // POV's diffuse term: cos^brilliance (shading.cpp).
+                    glm::dvec3 lc = ls.colour * (mv.brilliance == 1 ? c : std::pow(c, mv.brilliance));
                     if (!l.shadowless)
                         lc *= shadow_filter(geometry, p, ls.dir, ls.distance, outside, counters);
                     H[2 * v + side] += lc;
@@ -151,7 +153,8 @@ RadiositySystem dense_system(const SceneMesh& mesh, const VertexFormFactors& F,
     if (n > kMaxDense)
         throw LumenError({}, "radiosity: " + std::to_string(n) +
                                  " unknowns are too many for a dense solver",
-                         "use Radiosity_Method=jacobi or a larger Radiosity_Patch_Size");
+                         "use Radiosity_Method=gauss_seidel, progressive or jacobi (sparse), or a "
+                         "larger Radiosity_Patch_Size");
     RadiositySystem s;
     s.F = FormFactorMatrix(n);
     s.rho.resize(n);
@@ -248,6 +251,27 @@ Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
             if (k + 1 == cap && sol.bounces == 0)
                 info.warnings.push_back("warning: radiosity: Jacobi stopped at its iteration cap");
         }
+    } else if (method == Method::GaussSeidel || method == Method::Progressive) {
+        // On the sparse rows: no dense matrix, no cap on the unknowns.
+        std::vector<glm::dvec3> rho(n), c(n);
+        std::vector<double> area(n);
+        for (size_t u = 0; u < n; ++u) {
+            const MeshVertex& v = mesh.vertices[u / 2];
+            rho[u] = v.rho;
+            c[u] = B[u];
+            area[u] = v.area > 0 ? v.area : 1e-12;
+        }
+        const SparseSolve r =
+            method == Method::GaussSeidel
+                ? sparse_gauss_seidel(F, rho, c, options.tolerance, 100000)
+                : sparse_progressive(F, rho, c, area, options.tolerance, long(1000) * long(n));
+        info.iterations = int(std::min<long>(r.iterations, INT32_MAX));
+        if (!r.converged)
+            info.warnings.push_back(std::string("warning: radiosity: ") + method_name(method) +
+                                    " stopped before its tolerance (" +
+                                    std::to_string(r.iterations) + " steps)");
+        B = r.B;
+        sol.bounces = 0;
     } else {
         const RadiositySystem system = dense_system(mesh, F, H);
         const std::string problem = stability_problem(system);
