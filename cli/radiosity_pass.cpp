@@ -65,9 +65,6 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
     intersector_ = std::make_unique<GeometryIntersector>(*geometry_);
     mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(scene, options.patch_size));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
-    if (scene.sky_sphere)
-        log.push_back(scene.sky_sphere->loc.str() +
-                      ": warning: radiosity sees the background colour, not the sky_sphere");
 
     const uint64_t key = scene_key(scene);
     const size_t unknowns = mesh_->unknowns();

@@ -299,5 +299,32 @@ TEST(RadiosityPass, SparseSolversHaveNoUnknownCap) {
     EXPECT_LT(worst, 1e-4 * size);
 }
 
+// Gather rays that leave the scene see the sky_sphere (over the background), as POV's
+// radiosity rays do: an open floor's upward side gathers exactly the sky's colour.
+TEST(RadiosityPass, EscapingRaysSeeTheSkySphere) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+                                 "#version 3.7; global_settings { radiosity { recursion_limit 1 } }\n"
+                                 "background { rgb 0.9 }\n"
+                                 "sky_sphere { pigment { rgb <0.25, 0.5, 0.75> } }\n"
+                                 "camera { location <0, 5, -5> look_at <0, 0, 0> }\n"
+                                 "box { <-2, -0.1, -2>, <2, 0, 2> pigment { rgb 0.5 } }\n");
+    RadiosityPass pass;
+    std::vector<std::string> log;
+    ASSERT_NE(pass.prepare(s, small(), view(), log), nullptr);
+    for (const std::string& l : log) EXPECT_EQ(l.find("sky_sphere"), std::string::npos) << l;
+    const auto mesh = render::radiosity::build_scene_mesh(s, small().patch_size);
+    int checked = 0;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        if (std::fabs(mesh.vertices[v].position.y) > 1e-9 || mesh.vertices[v].normal.y < 0.5) continue;
+        const glm::dvec3 g = pass.solution()->G[2 * v];
+        EXPECT_NEAR(g.x, 0.25, 1e-9);
+        EXPECT_NEAR(g.y, 0.5, 1e-9);
+        EXPECT_NEAR(g.z, 0.75, 1e-9);
+        ++checked;
+    }
+    EXPECT_GT(checked, 10);
+}
+
 }  // namespace
 }  // namespace lumen::cli

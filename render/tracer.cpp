@@ -10,6 +10,7 @@
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
+#include "render/sky.hpp"
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -286,21 +287,10 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 RayColour Tracer::sky(const glm::dvec3& dir) const {
     const scene::Colour& bg = scene_.background;
     RayColour out;
-    // The interpreter has already premultiplied the rgb by (1 − transmit) (§7.4).
-    out.rgb = glm::dvec3(bg.r, bg.g, bg.b);
+    glm::dvec3 through;
+    out.rgb = sky_colour(scene_, dir, &through);
     out.transmit = options_.alpha ? (bg == scene::Colour{} ? 1.0 : bg.t) : 0.0;
-    if (!scene_.sky_sphere || scene_.sky_sphere->pigments.empty()) return out;
-    const scene::SkySphere& sky = *scene_.sky_sphere;
-    const glm::dvec3 p = sky.transform.is_identity() ? dir : sky.transform.inv_vector(dir);
-    // Layers like a texture: the last pigment is on top; the background shows through.
-    glm::dvec3 acc(0), filter(1);
-    for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
-        const scene::Colour c = evaluate_pigment(it->get(), p);
-        acc += filter * glm::dvec3(c.r, c.g, c.b) * (1 - c.f - c.t) * sky.emission;
-        filter *= layer_filter(c);
-    }
-    out.rgb = acc + filter * out.rgb;
-    out.transmit *= grey(filter);
+    if (scene_.sky_sphere && !scene_.sky_sphere->pigments.empty()) out.transmit *= grey(through);
     return out;
 }
 

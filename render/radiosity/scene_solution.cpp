@@ -19,6 +19,7 @@
 #include "render/radiosity/sparse_solve.hpp"
 #include "render/radiosity/vertex_rays.hpp"
 #include "render/shadows.hpp"
+#include "render/sky.hpp"
 
 namespace lumen::render::radiosity {
 
@@ -64,9 +65,8 @@ glm::dvec3 VertexFormFactors::gather(size_t u, const std::vector<glm::dvec3>& B)
     return g;
 }
 
-glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3&) {
-    const scene::Colour& bg = scene.background;
-    return {bg.r, bg.g, bg.b};
+glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3& dir) {
+    return sky_colour(scene, dir);
 }
 
 int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options) {

@@ -47,7 +47,7 @@ struct SolveInfo {
     std::vector<std::string> warnings;  // stability reports
 };
 
-// The background colour radiosity gathers see for an escaping direction.
+// What radiosity gathers see in an escaping direction: the sky_sphere over the background.
 glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3& dir);
 
 // Direct light per vertex side (the H above).
