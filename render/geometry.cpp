@@ -2,6 +2,7 @@
 // a list of unbounded ones (planes, inverse shapes) that every ray tests.
 #include "render/geometry.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -25,12 +26,62 @@ double next_up(double x) {
 // Up to this many bounded objects are tested in a loop instead of through the BVH.
 constexpr size_t kDirectRoots = 8;
 
+// A top-level node as the nearest-hit loop sees it. World-space spheres, planes and boxes
+// with no transform, clips or bounds (most roots of small scenes) are tested here directly:
+// the node walk and variant dispatch cost more than the sphere test itself.
+struct Root {
+    enum class Kind : uint8_t { Node, Sphere, Plane, Box };
+    Kind kind = Kind::Node;
+    bool no_shadow = false;
+    uint32_t node = 0;
+    double min_depth = kDepthDefault;
+    const void* shape = nullptr;  // the SphereShape, PlaneShape or BoxShape in the store
+};
+
+Root make_root(const NodeStore& store, uint32_t index) {
+    Root r;
+    r.node = index;
+    const Node& n = store.nodes[index];
+    if (n.kind != NodeKind::Shape || !n.identity || n.clip_count || n.bound_count) return r;
+    const ShapeData& d = store.shapes[n.shape];
+    if (auto* s = std::get_if<SphereShape>(&d)) r.kind = Root::Kind::Sphere, r.shape = s;
+    else if (auto* s = std::get_if<PlaneShape>(&d)) r.kind = Root::Kind::Plane, r.shape = s;
+    else if (auto* s = std::get_if<BoxShape>(&d)) r.kind = Root::Kind::Box, r.shape = s;
+    r.no_shadow = n.no_shadow;
+    r.min_depth = n.min_depth;
+    return r;
+}
+
+// Same answer as intersect_node(store, r.node, ...) (its primitive path, for direct kinds).
+bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, double tmin,
+                    double tmax, bool shadow, NodeHit& hit) {
+    if (r.kind == Root::Kind::Node) return intersect_node(store, r.node, ray, tmin, tmax, shadow, hit);
+    if (shadow && r.no_shadow) return false;
+    const LocalRay local{ray.origin, ray.dir};
+    const double from = std::max(tmin, r.min_depth);
+    bool found = false;
+    switch (r.kind) {
+    case Root::Kind::Sphere:
+        found = intersect(*static_cast<const SphereShape*>(r.shape), local, from, tmax, hit.shape);
+        break;
+    case Root::Kind::Plane:
+        found = intersect(*static_cast<const PlaneShape*>(r.shape), local, from, tmax, hit.shape);
+        break;
+    case Root::Kind::Box:
+        found = intersect(*static_cast<const BoxShape*>(r.shape), local, from, tmax, hit.shape);
+        break;
+    case Root::Kind::Node: break;
+    }
+    hit.leaf = r.node;
+    return found;
+}
+
 }  // namespace
 
 struct Geometry::Impl {
     NodeStore store;
-    std::vector<uint32_t> bounded;    // roots in BVH order
-    std::vector<uint32_t> unbounded;  // roots tested by every ray
+    std::vector<Root> bounded;        // roots in BVH order
+    std::vector<Root> unbounded;      // roots tested by every ray
     std::vector<Aabb> bounded_boxes;  // bounded[i]'s box (small scenes skip the BVH walk)
     Aabb all_bounded;                 // around all of bounded_boxes
     Bvh bvh;
@@ -52,14 +103,14 @@ Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) 
             boxes.push_back(box);
             finite.push_back(r);
         } else {
-            impl_->unbounded.push_back(r);
+            impl_->unbounded.push_back(make_root(store, r));
         }
     }
     impl_->bvh.build(boxes, 2);
-    for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(finite[i]);
-    for (uint32_t r : impl_->bounded) {
-        impl_->bounded_boxes.push_back(store.nodes[r].surface);
-        impl_->all_bounded.expand(store.nodes[r].surface);
+    for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(make_root(store, finite[i]));
+    for (const Root& r : impl_->bounded) {
+        impl_->bounded_boxes.push_back(store.nodes[r.node].surface);
+        impl_->all_bounded.expand(store.nodes[r.node].surface);
     }
 }
 
@@ -76,9 +127,10 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     // Limit for the next candidate: hits at exactly best_t still compete, and the earlier
     // object in scene order wins, so coincident surfaces resolve the same way on every ray.
     double limit = t_max;
-    auto test = [&](uint32_t root) {
+    auto test = [&](const Root& r) {
+        const uint32_t root = r.node;
         NodeHit h;
-        if (!intersect_node(store, root, ray, t_min, limit, shadow, h)) return;
+        if (!intersect_root(store, r, ray, t_min, limit, shadow, h)) return;
         if (h.shape.t < best_t || (h.shape.t == best_t && root < best_root) || !found) {
             best = h;
             best_t = h.shape.t;
@@ -87,7 +139,7 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
             limit = next_up(best_t);
         }
     };
-    for (uint32_t r : impl_->unbounded) test(r);
+    for (const Root& r : impl_->unbounded) test(r);
     const SlabRay slab(ray.origin, ray.dir);
     if (impl_->bounded.size() <= kDirectRoots) {
         // A handful of objects: past the box around them all (one test culls most shadow
