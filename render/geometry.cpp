@@ -59,21 +59,12 @@ bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, doubl
     if (shadow && r.no_shadow) return false;
     const LocalRay local{ray.origin, ray.dir};
     const double from = std::max(tmin, r.min_depth);
-    bool found = false;
-    switch (r.kind) {
-    case Root::Kind::Sphere:
-        found = intersect(*static_cast<const SphereShape*>(r.shape), local, from, tmax, hit.shape);
-        break;
-    case Root::Kind::Plane:
-        found = intersect(*static_cast<const PlaneShape*>(r.shape), local, from, tmax, hit.shape);
-        break;
-    case Root::Kind::Box:
-        found = intersect(*static_cast<const BoxShape*>(r.shape), local, from, tmax, hit.shape);
-        break;
-    case Root::Kind::Node: break;
-    }
     hit.leaf = r.node;
-    return found;
+    if (r.kind == Root::Kind::Sphere)
+        return intersect(*static_cast<const SphereShape*>(r.shape), local, from, tmax, hit.shape);
+    if (r.kind == Root::Kind::Plane)
+        return intersect(*static_cast<const PlaneShape*>(r.shape), local, from, tmax, hit.shape);
+    return intersect(*static_cast<const BoxShape*>(r.shape), local, from, tmax, hit.shape);
 }
 
 }  // namespace
