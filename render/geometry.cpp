@@ -132,12 +132,15 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     };
     for (const Root& r : impl_->unbounded) test(r);
     const SlabRay slab(ray.origin, ray.dir);
-    if (impl_->bounded.size() <= kDirectRoots) {
+    const size_t n_bounded = impl_->bounded.size();
+    if (n_bounded <= kDirectRoots) {
         // A handful of objects: past the box around them all (one test culls most shadow
         // rays), their own boxes cull as well as the BVH's inner nodes would.
-        if (!impl_->bounded.empty() && slab.hits(impl_->all_bounded, t_min, limit))
-            for (size_t i = 0; i < impl_->bounded.size(); ++i)
-                if (slab.hits(impl_->bounded_boxes[i], t_min, limit)) test(impl_->bounded[i]);
+        const Root* roots = impl_->bounded.data();
+        const Aabb* boxes = impl_->bounded_boxes.data();
+        if (n_bounded && slab.hits(impl_->all_bounded, t_min, limit))
+            for (size_t i = 0; i < n_bounded; ++i)
+                if (slab.hits(boxes[i], t_min, limit)) test(roots[i]);
     } else {
         double prune = limit;
         impl_->bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
