@@ -112,7 +112,7 @@ std::string usage_text() {
            "  Radiosity_Form_Factors=raycast|analytic|hemicube, Radiosity_FF_Rays=N,\n"
            "  Radiosity_Hemicube_Res=R      form factor method, rays per vertex, resolution\n"
            "  Radiosity_Gather_Rays=N       final gather rays (from count)\n"
-           "  Radiosity_Cache_Error=E       irradiance cache error (from error_bound)\n"
+           "  Radiosity_Cache_Error=E       irradiance cache error (error_bound / 10)\n"
            "  Radiosity_Display=gather|preview  final gather or interpolated patches\n"
            "  Radiosity_Subdivide=on|off    split receiving elements where G changes (on)\n"
            "  Radiosity_Subdivide_Tolerance=T, Radiosity_Min_Element=S,\n"
