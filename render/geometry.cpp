@@ -53,11 +53,11 @@ Root make_root(const NodeStore& store, uint32_t index) {
 }
 
 // Same answer as intersect_node(store, r.node, ...) (its primitive path, for direct kinds).
-bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, double tmin,
-                    double tmax, bool shadow, NodeHit& hit) {
+// `local` is the world ray itself, made once per query.
+bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, const LocalRay& local,
+                    double tmin, double tmax, bool shadow, NodeHit& hit) {
     if (r.kind == Root::Kind::Node) return intersect_node(store, r.node, ray, tmin, tmax, shadow, hit);
     if (shadow && r.no_shadow) return false;
-    const LocalRay local{ray.origin, ray.dir};
     const double from = std::max(tmin, r.min_depth);
     hit.leaf = r.node;
     if (r.kind == Root::Kind::Sphere)
@@ -118,10 +118,11 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     // Limit for the next candidate: hits at exactly best_t still compete, and the earlier
     // object in scene order wins, so coincident surfaces resolve the same way on every ray.
     double limit = t_max;
+    const LocalRay local{ray.origin, ray.dir};
     auto test = [&](const Root& r) {
         const uint32_t root = r.node;
         NodeHit h;
-        if (!intersect_root(store, r, ray, t_min, limit, shadow, h)) return;
+        if (!intersect_root(store, r, ray, local, t_min, limit, shadow, h)) return;
         if (h.shape.t < best_t || (h.shape.t == best_t && root < best_root) || !found) {
             best = h;
             best_t = h.shape.t;

@@ -32,11 +32,11 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
     InteriorList inside = interiors;
     Ray ray{point, dir};
     double remaining = distance;
+    Hit hit;  // one for the whole loop: intersect() sets every field of a hit it reports
     for (int i = 0; i < kMaxShadowSurfaces; ++i) {
         const double t_max = remaining - kShadowTolerance;
         if (t_max <= kShadowTolerance) break;
         ++counters.shadow_rays;
-        Hit hit;
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
         filter *= surface_filter(facing_texture(hit, dir), hit.point);
         if (is_black(filter)) return glm::dvec3(0);
