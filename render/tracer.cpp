@@ -127,7 +127,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
-    apply_fog(c, ray, *depth, *ctx.interiors);
+    if (!scene_.fogs.empty()) apply_fog(c, ray, *depth, *ctx.interiors);  // no call per ray without fog
     return c;
 }
 
