@@ -67,9 +67,12 @@ private:
         const glm::dvec3 c00 = sample(u1, v1), c10 = sample(u2, v1);
         const glm::dvec3 c01 = sample(u1, v2), c11 = sample(u2, v2);
         const bool large = u2 - u1 > 1 || v2 - v1 > 1;
-        const bool differs = diff(c00, c10) > 0.1 || diff(c10, c11) > 0.1 ||
-                             diff(c11, c01) > 0.1 || diff(c01, c00) > 0.1;
-        if (large && (level < l_.adaptive || differs)) {
+        // The corners are compared only where that decides (most blocks are single cells).
+        auto differs = [&] {
+            return diff(c00, c10) > 0.1 || diff(c10, c11) > 0.1 || diff(c11, c01) > 0.1 ||
+                   diff(c01, c00) > 0.1;
+        };
+        if (large && (level < l_.adaptive || differs())) {
             const int ua = (u1 + u2) / 2, ub = (u1 + u2 + 1) / 2;  // floor and ceil of the middle
             const int va = (v1 + v2) / 2, vb = (v1 + v2 + 1) / 2;
             return 0.25 * (block(u1, v1, ua, va, level + 1) + block(ub, v1, u2, va, level + 1) +
