@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "render/radiosity/mesh_checks.hpp"
 #include "render/radiosity/mesher.hpp"
 #include "render/texture_layers.hpp"
 
@@ -216,6 +217,7 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
         mesh.per_object[it->second].elements.push_back(i);
     }
     build_grid(mesh);
+    report_mesh_problems(mesh, mesh.warnings);
     for (SceneMesh::ObjectElements& o : mesh.per_object) {
         std::vector<Aabb> boxes;
         for (uint32_t i : o.elements) boxes.push_back(mesh.boxes[i]);

@@ -1,0 +1,59 @@
+// The radiosity mesh's stability reports on scenes read from SDL: coincident surfaces facing
+// the same way and sliver elements are reported with their source locations; a box resting
+// on a floor (surfaces in contact, facing each other) and a plain room are not.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "interp/interpret.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+
+namespace lumen::cli {
+namespace {
+
+std::vector<std::string> mesh_warnings(const std::string& objects) {
+    SourceManager sources;
+    const scene::Scene scene = interp::interpret_text(
+        sources, "mesh.pov",
+        "#version 3.7; global_settings { radiosity { } }\n"
+        "camera { location <0, 3, -6> look_at 0 }\nlight_source { <2, 5, -3> rgb 1 }\n" +
+            objects,
+        {});
+    return render::radiosity::build_scene_mesh(scene, 0.5).warnings;
+}
+
+int count_containing(const std::vector<std::string>& w, const std::string& text) {
+    return int(std::count_if(w.begin(), w.end(), [&](const std::string& s) {
+        return s.find(text) != std::string::npos;
+    }));
+}
+
+TEST(RadiosityMeshChecks, CoincidentSurfacesAreReportedWithBothLocations) {
+    const auto w = mesh_warnings(
+        "box { <-1, 0, -1>, <1, 1, 1> pigment { rgb 0.5 } }\n"
+        "box { <-1, 0, -1>, <1, 1, 1> pigment { rgb 0.7 } }\n");
+    ASSERT_EQ(count_containing(w, "coincides"), 1);
+    EXPECT_EQ(count_containing(w, "mesh.pov:4:1: warning: radiosity: this surface coincides "
+                                  "with the one at mesh.pov:5:1"),
+              1);
+}
+
+TEST(RadiosityMeshChecks, ABoxRestingOnAFloorIsNotReported) {
+    const auto w = mesh_warnings(
+        "box { <-3, -0.5, -3>, <3, 0, 3> pigment { rgb 0.5 } }\n"
+        "box { <-1, 0, -1>, <1, 1, 1> pigment { rgb 0.7 } }\n");
+    EXPECT_EQ(count_containing(w, "coincides"), 0);
+    EXPECT_EQ(count_containing(w, "sliver"), 0);
+}
+
+TEST(RadiosityMeshChecks, SliverTrianglesAreReported) {
+    const auto w = mesh_warnings(
+        "triangle { <-1, 0, 0>, <1, 0, 0>, <0, 0.0001, 0> pigment { rgb 0.5 } }\n"
+        "triangle { <-1, 1, 0>, <1, 1, 0>, <0, 2, 0> pigment { rgb 0.5 } }\n");
+    ASSERT_EQ(count_containing(w, "sliver"), 1);
+    EXPECT_EQ(count_containing(w, "mesh.pov:4:1: warning: radiosity: "), 1);
+}
+
+}  // namespace
+}  // namespace lumen::cli

@@ -1,0 +1,132 @@
+#include "render/radiosity/mesh_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+namespace lumen::render::radiosity {
+namespace {
+
+std::string where(const scene::Object* o) { return o ? o->loc.str() + ": " : std::string(); }
+
+// Source order, so that a pair is always named the same way round.
+bool earlier(const scene::Object* a, const scene::Object* b) {
+    if (!a || !b) return a < b;
+    return std::tie(a->loc.line, a->loc.column) < std::tie(b->loc.line, b->loc.column);
+}
+
+glm::dvec3 corner(const SceneMesh& m, const MeshElement& e, int k) {
+    return m.vertices[e.v[k]].position;
+}
+
+bool is_sliver(const SceneMesh& m, const MeshElement& e) {
+    double longest2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 d = corner(m, e, (k + 1) % 3) - corner(m, e, k);
+        longest2 = std::max(longest2, glm::dot(d, d));
+    }
+    return longest2 > kSliverRatio * e.area;
+}
+
+// Whether p (on the element's plane) lies strictly inside it, with a margin of `inset`.
+bool contains(const SceneMesh& m, const MeshElement& e, const glm::dvec3& p, double inset) {
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 a = corner(m, e, k), b = corner(m, e, (k + 1) % 3);
+        const glm::dvec3 edge = b - a;
+        const glm::dvec3 in = glm::normalize(glm::cross(e.normal, edge));  // points inside
+        if (glm::dot(p - a, in) <= inset) return false;
+    }
+    return true;
+}
+
+struct CellKey {
+    long x, y, z;
+    bool operator==(const CellKey&) const = default;
+};
+struct CellHash {
+    size_t operator()(const CellKey& k) const {
+        return size_t(k.x) * 73856093u ^ size_t(k.y) * 19349663u ^ size_t(k.z) * 83492791u;
+    }
+};
+
+void report_slivers(const SceneMesh& m, std::vector<std::string>& warnings) {
+    std::map<const scene::Object*, int> count;
+    for (const MeshElement& e : m.elements)
+        if (is_sliver(m, e)) ++count[e.object];
+    for (const auto& [object, n] : count)
+        warnings.push_back(where(object) + "warning: radiosity: " + std::to_string(n) +
+                           " sliver element(s) on this object (thinner than 1/500 of their "
+                           "length); their indirect light is less reliable");
+}
+
+void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
+    // Elements are at most a patch wide, so an element that covers another's centroid has its
+    // own centroid within one cell (of a patch) of it.
+    const double cell = std::max(m.patch_size, 1e-9);
+    auto key = [&](const glm::dvec3& p) {
+        return CellKey{long(std::floor(p.x / cell)), long(std::floor(p.y / cell)),
+                       long(std::floor(p.z / cell))};
+    };
+    std::vector<glm::dvec3> centroid(m.elements.size());
+    std::unordered_map<CellKey, std::vector<uint32_t>, CellHash> cells;
+    for (uint32_t i = 0; i < m.elements.size(); ++i) {
+        const MeshElement& e = m.elements[i];
+        centroid[i] = (corner(m, e, 0) + corner(m, e, 1) + corner(m, e, 2)) / 3.0;
+        cells[key(centroid[i])].push_back(i);
+    }
+    const double plane_tol = 1e-6 * cell;
+    std::map<std::pair<const scene::Object*, const scene::Object*>, bool> pairs;
+    for (uint32_t i = 0; i < m.elements.size(); ++i) {
+        const MeshElement& e = m.elements[i];
+        const CellKey c = key(centroid[i]);
+        for (long dz = -1; dz <= 1; ++dz)
+            for (long dy = -1; dy <= 1; ++dy)
+                for (long dx = -1; dx <= 1; ++dx) {
+                    const auto it = cells.find({c.x + dx, c.y + dy, c.z + dz});
+                    if (it == cells.end()) continue;
+                    for (uint32_t j : it->second) {
+                        const MeshElement& f = m.elements[j];
+                        if (f.object == e.object || glm::dot(e.normal, f.normal) < 1 - 1e-9)
+                            continue;
+                        const double off = glm::dot(centroid[i] - corner(m, f, 0), f.normal);
+                        if (std::fabs(off) > plane_tol) continue;
+                        if (!contains(m, f, centroid[i], plane_tol)) continue;
+                        pairs[earlier(e.object, f.object) ? std::pair(e.object, f.object)
+                                                          : std::pair(f.object, e.object)] = true;
+                    }
+                }
+    }
+    std::vector<std::pair<const scene::Object*, const scene::Object*>> sorted;
+    for (const auto& [objects, _] : pairs) sorted.push_back(objects);
+    auto place = [](const scene::Object* o) {
+        return o ? std::tuple(o->loc.line, o->loc.column) : std::tuple(0u, 0u);
+    };
+    std::sort(sorted.begin(), sorted.end(), [&](const auto& a, const auto& b) {
+        return std::tuple(place(a.first), place(a.second)) <
+               std::tuple(place(b.first), place(b.second));
+    });
+    std::set<std::string> said;  // objects made in a loop share their location: say it once
+    for (const auto& objects : sorted) {
+        std::string text = where(objects.first) + "warning: radiosity: this surface coincides " +
+                           "with the one at " + (objects.second ? objects.second->loc.str()
+                                                                 : std::string("?")) +
+                           " (coplanar, overlapping, facing the same way); each point gets "
+                           "the light of whichever a ray meets first";
+        if (said.insert(text).second) warnings.push_back(std::move(text));
+    }
+}
+
+}  // namespace
+
+void report_mesh_problems(const SceneMesh& mesh, std::vector<std::string>& warnings) {
+    report_slivers(mesh, warnings);
+    report_coincident(mesh, warnings);
+}
+
+}  // namespace lumen::render::radiosity
