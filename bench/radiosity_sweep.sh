@@ -108,7 +108,7 @@ lumen_sweep() {
         lumen_run "lumen preview: patch size" Radiosity_Display=preview Radiosity_Patch_Size=$v
     done
     for v in "${off_sizes[@]}"; do
-        lumen_run "lumen preview, no subdivision: patch size" Radiosity_Display=preview \
+        lumen_run "lumen preview without subdivision: patch size" Radiosity_Display=preview \
             Radiosity_Subdivide=off Radiosity_Patch_Size=$v
     done
     for v in "${gathers[@]}"; do
