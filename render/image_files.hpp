@@ -5,13 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "render/default_init.hpp"
+
 namespace lumen::render {
 
 // Pixels as they go into the file, row-major from the top, `channels` (3 or 4) per pixel.
 struct EncodedImage {
     int width = 0, height = 0, channels = 3;
     int maxval = 255;  // integer files: 255 or 65535, values hold levels 0..maxval; 0: float
-    std::vector<float> values;
+    std::vector<float, DefaultInit<float>> values;  // every value is written by the encoder
     // How integer levels encode light, for the file's colour metadata.
     enum class Curve { Unlabelled, SRGB, Power } curve = Curve::SRGB;
     double file_gamma = 1.0;  // Curve::Power: levels = linear^(1/file_gamma)

@@ -32,10 +32,10 @@ struct ErrorText {
 void on_warning(png_structp, png_const_charp) {}
 
 // Big-endian sample bytes, one row after another (what libpng takes for 8 and 16 bits).
-std::vector<uint8_t> sample_bytes(const EncodedImage& image) {
+std::vector<uint8_t, DefaultInit<uint8_t>> sample_bytes(const EncodedImage& image) {
     const bool sixteen = image.maxval > 255;
     const size_t n = size_t(image.width) * image.height * image.channels;
-    std::vector<uint8_t> out(sixteen ? 2 * n : n);
+    std::vector<uint8_t, DefaultInit<uint8_t>> out(sixteen ? 2 * n : n);  // all written below
     for (size_t i = 0; i < n; ++i) {
         const unsigned v = unsigned(image.values[i]);
         if (sixteen) {
@@ -84,7 +84,7 @@ bool encode(std::FILE* file, const EncodedImage& image, png_bytepp rows, ErrorTe
 }  // namespace
 
 void write_png(const EncodedImage& image, const std::string& path) {
-    std::vector<uint8_t> bytes = sample_bytes(image);
+    auto bytes = sample_bytes(image);
     const size_t stride = bytes.size() / size_t(image.height);
     std::vector<png_bytep> rows(size_t(image.height));
     for (int y = 0; y < image.height; ++y) rows[size_t(y)] = bytes.data() + size_t(y) * stride;
