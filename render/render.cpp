@@ -76,12 +76,17 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
     Image image;
     image.width = options.width;
     image.height = options.height;
-    image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);
-
     const int x0 = std::clamp(options.start_col, 0, options.width - 1);
     const int y0 = std::clamp(options.start_row, 0, options.height - 1);
     const int x1 = options.end_col < 0 ? options.width - 1 : std::min(options.end_col, options.width - 1);
     const int y1 = options.end_row < 0 ? options.height - 1 : std::min(options.end_row, options.height - 1);
+    // The blocks write every pixel of the render area, so only a partial render needs zeroes
+    // (zeroing 9.6 MB at 800x600 first took its page faults on one thread).
+    const bool whole = x0 == 0 && y0 == 0 && x1 == options.width - 1 && y1 == options.height - 1;
+    if (whole)
+        image.pixels.resize(size_t(image.width) * image.height * 5);
+    else
+        image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);
     if (x1 < x0 || y1 < y0) return image;
 
     const int block_size =

@@ -4,6 +4,8 @@
 #include <functional>
 #include <vector>
 
+#include "render/default_init.hpp"
+
 #include "scene/scene.hpp"
 
 namespace lumen::render {
@@ -31,7 +33,9 @@ struct RenderOptions {
 // RGBFT per pixel in the scene's working colour space, unclipped (POV keeps floats until output).
 struct Image {
     int width = 0, height = 0;
-    std::vector<float> pixels;  // 5 floats per pixel: r g b f t, row-major from the top
+    // 5 floats per pixel: r g b f t, row-major from the top. Not zeroed on resize: the render
+    // writes every pixel of its area (and zeroes the rest of a partial render itself).
+    std::vector<float, DefaultInit<float>> pixels;
     float* at(int x, int y) { return &pixels[(size_t(y) * width + x) * 5]; }
     const float* at(int x, int y) const { return &pixels[(size_t(y) * width + x) * 5]; }
 };
