@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <new>
+#include <optional>
 #include <thread>
 
 #include "cli/big_stack.hpp"
@@ -49,12 +50,24 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     options.indirect = radiosity.prepare(scene, o.radiosity, options, log);
     for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
     ProgressBar bar(terminal, label);
+    // Whole images are encoded block by block while they render: only the file write is left
+    // at the end (a partial render encodes its zeroed margins too, after the render).
+    std::optional<render::ImageEncoder> encoder;
+    render::BlockDone encode_block;
+    if (!frame.output.empty() && render::covers_whole_image(options)) {
+        encoder.emplace(scene, o.image, options.width, options.height);
+        encoder->stream_to(frame.output);
+        encode_block = [&](const render::Image& im, int l, int t, int r, int b) {
+            encoder->encode(im, l, t, r, b);
+        };
+    }
     const render::Image image = render::render(scene, options, &stats,
-                                               [&](double f) { bar.update(f); });
+                                               [&](double f) { bar.update(f); }, encode_block);
     const double render_seconds = seconds_since(start);
     bar.finish();
     if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
-    if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);
+    if (encoder) encoder->write(frame.output);
+    else if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);
     std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s\n",
                  o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
                  format_duration(parse_seconds).c_str(), image.width, image.height,

@@ -2,6 +2,9 @@
 // and TIFF through OpenImageIO, loaded only when one of those is asked for (oiio_module.cpp):
 // OIIO pulls in some 260 shared libraries whose start-up would dominate a small render.
 #pragma once
+#include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,14 @@ struct EncodedImage {
 // Each writes `path` completely or throws std::runtime_error with the reason (a partial file
 // may remain: the caller writes to a temporary name and renames it).
 void write_png(const EncodedImage& image, const std::string& path);
+// PNG rows as they become available: `rows(y)` returns row y's sample bytes (big-endian for
+// 16 bits), valid until the next call, waiting for them if it must; it throws to abandon the
+// file. `header` gives the size and format (its values are not read).
+using RowSource = std::function<const uint8_t*(int y)>;
+void write_png_rows(const EncodedImage& header, const RowSource& rows, const std::string& path);
+// Row y of `image` as PNG sample bytes, png_row_bytes(image) of them.
+void png_sample_bytes(const EncodedImage& image, int y, uint8_t* out);
+size_t png_row_bytes(const EncodedImage& image);
 void write_ppm(const EncodedImage& image, const std::string& path);
 // format: OpenImageIO's name ("openexr", "hdr", "tiff").
 void write_with_oiio(const EncodedImage& image, const char* format, const std::string& path);

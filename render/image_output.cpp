@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -47,7 +50,7 @@ float to_linear(float v, const Encoding& e) {
 }
 
 // Working value -> encoded file value in [0,1] (before quantisation), unclipped.
-float encode(float v, const Encoding& e) {
+float encode_value(float v, const Encoding& e) {
     if (e.identity) return v;
     const float lin = to_linear(v, e);
     if (e.file_gamma <= 0) return srgb_encode(lin);
@@ -73,72 +76,146 @@ const char* extension(FileType type) {
 
 bool is_float_format(FileType type) { return type == FileType::EXR || type == FileType::HDR; }
 
-// Float formats get linear light; integer formats the quantised levels 0..maxval.
-EncodedImage prepare_pixels(const Image& image, const Encoding& e, const OutputOptions& o,
-                            int channels, int maxval) {
-    const bool floating = is_float_format(o.type);
-    EncodedImage out;
-    out.width = image.width;
-    out.height = image.height;
-    out.channels = channels;
-    out.maxval = floating ? 0 : maxval;
-    out.curve = e.identity ? EncodedImage::Curve::Unlabelled
-                : e.file_gamma <= 0 ? EncodedImage::Curve::SRGB
-                                    : EncodedImage::Curve::Power;
-    out.file_gamma = e.file_gamma;
-    out.values.resize(size_t(image.width) * image.height * channels);
-    // Rows [y0, y1): the transfer curves cost a pow per channel, so bands run in parallel.
-    auto encode_rows = [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            for (int x = 0; x < image.width; ++x) {
-                const float* p = image.at(x, y);
-                float* q = &out.values[(size_t(y) * image.width + x) * channels];
-                const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
-                for (int c = 0; c < 3; ++c) {
-                    float v = p[c];
-                    // The buffer holds premultiplied colour; straight alpha files need it undone.
-                    if (o.alpha && !floating && alpha > 0) v /= alpha;
-                    if (floating)
-                        q[c] = e.identity ? v : to_linear(v, e);
-                    else
-                        q[c] = float(quantise(encode(v, e), maxval));
-                }
-                if (channels == 4) q[3] = floating ? alpha : float(quantise(alpha, maxval));
-            }
-        }
-    };
-    const int bands = int(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
-    std::vector<std::thread> helpers;
-    for (int b = 1; b < bands; ++b)
-        helpers.emplace_back(encode_rows, image.height * b / bands, image.height * (b + 1) / bands);
-    encode_rows(0, image.height / bands);
-    for (std::thread& t : helpers) t.join();
-    return out;
+std::filesystem::path temporary_path(const std::string& path, FileType type) {
+    const std::filesystem::path target(path);
+    std::filesystem::path tmp = target;
+    tmp.replace_filename("." + target.filename().string() + ".lumen-tmp" + extension(type));
+    return tmp;
 }
 
 }  // namespace
 
 int encode_8bit(double v, const scene::Scene& scene, const OutputOptions& options) {
-    return int(quantise(encode(float(v), encoding_for(scene, options)), 255));
+    return int(quantise(encode_value(float(v), encoding_for(scene, options)), 255));
 }
 
-void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
-                 const std::string& path) {
-    namespace fs = std::filesystem;
+struct ImageEncoder::Impl {
+    Encoding encoding;
+    OutputOptions options;
+    bool floating = false;
+    EncodedImage out;  // float formats get linear light; integer ones levels 0..maxval
 
-    const Encoding e = encoding_for(scene, options);
-    const int channels = options.alpha ? 4 : 3;
-    const bool sixteen = !is_float_format(options.type) && options.bits > 8 &&
+    // Streaming (stream_to): pixels encoded per row; the writer thread takes row y once
+    // row_pixels[y] reaches the width (acquire pairs with the encoders' release).
+    std::unique_ptr<std::atomic<int>[]> row_pixels;
+    std::mutex mutex;
+    std::condition_variable row_done;
+    bool abandoned = false;  // under mutex
+    std::thread writer;
+    std::string failure;  // the writer's error, read after join
+    std::filesystem::path tmp;
+
+    const uint8_t* wait_for_row(int y, std::vector<uint8_t, DefaultInit<uint8_t>>& bytes) {
+        std::unique_lock lock(mutex);
+        row_done.wait(lock, [&] { return abandoned || row_pixels[y].load(std::memory_order_acquire) == out.width; });
+        if (abandoned) throw std::runtime_error("abandoned");
+        lock.unlock();
+        png_sample_bytes(out, y, bytes.data());
+        return bytes.data();
+    }
+    void stop_writer() {
+        if (!writer.joinable()) return;
+        {
+            std::lock_guard lock(mutex);
+            abandoned = true;
+        }
+        row_done.notify_all();
+        writer.join();
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+    }
+};
+
+ImageEncoder::ImageEncoder(const scene::Scene& scene, const OutputOptions& options, int width,
+                           int height)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.encoding = encoding_for(scene, options);
+    m.options = options;
+    m.floating = is_float_format(options.type);
+    const bool sixteen = !m.floating && options.bits > 8 &&
                          (options.type == FileType::PNG || options.type == FileType::TIFF ||
                           options.type == FileType::PPM);
-    const EncodedImage pixels = prepare_pixels(image, e, options, channels, sixteen ? 65535 : 255);
+    EncodedImage& out = m.out;
+    out.width = width;
+    out.height = height;
+    out.channels = options.alpha ? 4 : 3;
+    out.maxval = m.floating ? 0 : sixteen ? 65535 : 255;
+    out.curve = m.encoding.identity         ? EncodedImage::Curve::Unlabelled
+                : m.encoding.file_gamma <= 0 ? EncodedImage::Curve::SRGB
+                                             : EncodedImage::Curve::Power;
+    out.file_gamma = m.encoding.file_gamma;
+    out.values.resize(size_t(width) * height * out.channels);
+}
 
+ImageEncoder::~ImageEncoder() { impl_->stop_writer(); }
+
+void ImageEncoder::stream_to(const std::string& path) {
+    Impl& m = *impl_;
+    if (m.options.type != FileType::PNG || m.writer.joinable() || m.out.height <= 0) return;
+    m.row_pixels = std::make_unique<std::atomic<int>[]>(size_t(m.out.height));
+    m.tmp = temporary_path(path, m.options.type);
+    m.writer = std::thread([&m] {
+        std::vector<uint8_t, DefaultInit<uint8_t>> bytes(png_row_bytes(m.out));
+        try {
+            write_png_rows(m.out, [&](int y) { return m.wait_for_row(y, bytes); }, m.tmp.string());
+        } catch (const std::exception& e) {
+            m.failure = e.what();
+        }
+    });
+}
+
+void ImageEncoder::encode(const Image& image, int left, int top, int right, int bottom) {
+    const Impl& m = *impl_;
+    const Encoding& e = m.encoding;
+    const int channels = m.out.channels, maxval = m.out.maxval;
+    float* values = impl_->out.values.data();
+    for (int y = top; y <= bottom; ++y) {
+        for (int x = left; x <= right; ++x) {
+            const float* p = image.at(x, y);
+            float* q = values + (size_t(y) * image.width + x) * channels;
+            const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c) {
+                float v = p[c];
+                // The buffer holds premultiplied colour; straight alpha files need it undone.
+                if (m.options.alpha && !m.floating && alpha > 0) v /= alpha;
+                if (m.floating)
+                    q[c] = e.identity ? v : to_linear(v, e);
+                else
+                    q[c] = float(quantise(encode_value(v, e), maxval));
+            }
+            if (channels == 4) q[3] = m.floating ? alpha : float(quantise(alpha, maxval));
+        }
+    }
+    if (!impl_->row_pixels) return;
+    bool any_complete = false;
+    for (int y = top; y <= bottom; ++y) {
+        const int n = right - left + 1;
+        any_complete |= impl_->row_pixels[y].fetch_add(n, std::memory_order_acq_rel) + n == m.out.width;
+    }
+    if (any_complete) {
+        { std::lock_guard lock(impl_->mutex); }  // the writer is waiting or will see the count
+        impl_->row_done.notify_all();
+    }
+}
+
+void ImageEncoder::write(const std::string& path) {
+    namespace fs = std::filesystem;
+    Impl& m = *impl_;
+    const FileType type = m.options.type;
+    const EncodedImage& pixels = m.out;
     const fs::path target(path);
-    fs::path tmp = target;
-    tmp.replace_filename("." + target.filename().string() + ".lumen-tmp" + extension(options.type));
-
+    const fs::path tmp = temporary_path(path, type);
+    if (m.writer.joinable()) {
+        m.writer.join();  // every row is encoded by now
+        if (!m.failure.empty()) {
+            std::error_code ec;
+            fs::remove(m.tmp, ec);
+            throw LumenError({}, "cannot write '" + path + "': " + m.failure);
+        }
+    } else {
     try {
-        switch (options.type) {
+        switch (type) {
             case FileType::PNG: write_png(pixels, tmp.string()); break;
             case FileType::PPM: write_ppm(pixels, tmp.string()); break;
             case FileType::EXR: write_with_oiio(pixels, "openexr", tmp.string()); break;
@@ -150,12 +227,30 @@ void write_image(const Image& image, const scene::Scene& scene, const OutputOpti
         fs::remove(tmp, ec);
         throw LumenError({}, "cannot write '" + path + "': " + failure.what());
     }
+    }
     std::error_code ec;
     fs::rename(tmp, target, ec);
     if (ec) {
         fs::remove(tmp, ec);
         throw LumenError({}, "cannot rename the image to '" + path + "': " + ec.message());
     }
+}
+
+void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
+                 const std::string& path) {
+    ImageEncoder encoder(scene, options, image.width, image.height);
+    // Bands on all cores: the transfer curves cost a pow per channel.
+    const int bands = int(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    const int w = image.width, h = image.height;
+    std::vector<std::thread> helpers;
+    for (int b = 1; b < bands; ++b)
+        if (h * b / bands < h * (b + 1) / bands)
+            helpers.emplace_back([&, b] {
+                encoder.encode(image, 0, h * b / bands, w - 1, h * (b + 1) / bands - 1);
+            });
+    if (h / bands > 0) encoder.encode(image, 0, 0, w - 1, h / bands - 1);
+    for (std::thread& t : helpers) t.join();
+    encoder.write(path);
 }
 
 }  // namespace lumen::render

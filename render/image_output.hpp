@@ -1,5 +1,6 @@
 // Encoding (gamma rules of povray-semantics.md §2) and writing image files (image_files.hpp).
 #pragma once
+#include <memory>
 #include <string>
 
 #include "render/render.hpp"
@@ -16,8 +17,32 @@ struct OutputOptions {
     double file_gamma = -1.0;
 };
 
-// Writes `image` to `path` (through a temporary file renamed at the end, so a failed run never
-// leaves a partial image). Applies the scene's gamma model. Throws LumenError on failure.
+// Encodes an image into file values (the scene's gamma model) rectangle by rectangle, so that
+// the render's workers can encode each block as it is finished and only the file write is
+// left when the last one is done. Rectangles must not overlap between concurrent calls.
+class ImageEncoder {
+public:
+    ImageEncoder(const scene::Scene& scene, const OutputOptions& options, int width, int height);
+    ~ImageEncoder();
+    ImageEncoder(const ImageEncoder&) = delete;
+    ImageEncoder& operator=(const ImageEncoder&) = delete;
+
+    // PNG: starts writing `path` on a thread of its own, each row as soon as all of it is
+    // encoded, so the compression overlaps the render. Other formats wait for write().
+    void stream_to(const std::string& path);
+    // Encodes pixels [left, right] x [top, bottom] (inclusive) of `image`.
+    void encode(const Image& image, int left, int top, int right, int bottom);
+    // Writes every encoded pixel to `path` (through a temporary file renamed at the end, so a
+    // failed run never leaves a partial image), or finishes the file stream_to began. Throws
+    // LumenError on failure. A stream never finished is abandoned and its file removed.
+    void write(const std::string& path);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Encodes all of `image` (on all cores) and writes it, as ImageEncoder::write.
 void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
                  const std::string& path);
 

@@ -1,7 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
+#include <thread>
 
 #include <OpenImageIO/imageio.h>
 
@@ -169,6 +174,66 @@ TEST(ImageOutput, UnwritableFolderIsAnError) {
     OutputOptions o;
     EXPECT_THROW(write_image(gradient_image(), legacy(), o, "/nonexistent-folder/x.png"),
                  lumen::LumenError);
+}
+
+// A 37x23 image with 8-pixel blocks: ragged last blocks, values across the whole range.
+Image noise_image() {
+    Image img;
+    img.width = 37;
+    img.height = 23;
+    img.pixels.resize(size_t(37) * 23 * 5);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-0.2f, 1.3f);
+    for (float& v : img.pixels) v = u(rng);
+    return img;
+}
+
+TEST(ImageOutput, StreamedPngEncodedBlockByBlockEqualsTheWholeImageFile) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_stream";
+    std::filesystem::create_directories(dir);
+    const Image img = noise_image();
+    for (int bits : {8, 16}) {
+        OutputOptions o;
+        o.bits = bits;
+        o.alpha = bits == 16;
+        write_image(img, v37(), o, (dir / "whole.png").string());
+        // Blocks in a shuffled order from two threads, as the render's workers hand them over.
+        std::vector<std::array<int, 4>> blocks;
+        for (int y = 0; y < img.height; y += 8)
+            for (int x = 0; x < img.width; x += 8)
+                blocks.push_back({x, y, std::min(x + 7, img.width - 1), std::min(y + 7, img.height - 1)});
+        std::shuffle(blocks.begin(), blocks.end(), std::mt19937(bits));
+        ImageEncoder encoder(v37(), o, img.width, img.height);
+        encoder.stream_to((dir / "streamed.png").string());
+        auto half = [&](size_t from) {
+            for (size_t i = from; i < blocks.size(); i += 2)
+                encoder.encode(img, blocks[i][0], blocks[i][1], blocks[i][2], blocks[i][3]);
+        };
+        std::thread other(half, 1);
+        half(0);
+        other.join();
+        encoder.write((dir / "streamed.png").string());
+        EXPECT_EQ(file_bytes(dir / "streamed.png"), file_bytes(dir / "whole.png")) << bits;
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ImageOutput, AbandonedStreamLeavesNoFile) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_abandon";
+    std::filesystem::create_directories(dir);
+    const Image img = noise_image();
+    {
+        ImageEncoder encoder(v37(), {}, img.width, img.height);
+        encoder.stream_to((dir / "x.png").string());
+        encoder.encode(img, 0, 0, img.width - 1, 10);  // the render failed after this
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+    // A stream to a folder that does not exist fails when it is finished.
+    ImageEncoder encoder(v37(), {}, img.width, img.height);
+    encoder.stream_to("/nonexistent-folder/x.png");
+    encoder.encode(img, 0, 0, img.width - 1, img.height - 1);
+    EXPECT_THROW(encoder.write("/nonexistent-folder/x.png"), lumen::LumenError);
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

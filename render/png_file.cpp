@@ -31,26 +31,22 @@ struct ErrorText {
 
 void on_warning(png_structp, png_const_charp) {}
 
-// Big-endian sample bytes, one row after another (what libpng takes for 8 and 16 bits).
-std::vector<uint8_t, DefaultInit<uint8_t>> sample_bytes(const EncodedImage& image) {
-    const bool sixteen = image.maxval > 255;
-    const size_t n = size_t(image.width) * image.height * image.channels;
-    std::vector<uint8_t, DefaultInit<uint8_t>> out(sixteen ? 2 * n : n);  // all written below
-    for (size_t i = 0; i < n; ++i) {
-        const unsigned v = unsigned(image.values[i]);
-        if (sixteen) {
-            out[2 * i] = uint8_t(v >> 8);
-            out[2 * i + 1] = uint8_t(v & 0xff);
-        } else {
-            out[i] = uint8_t(v);
-        }
+struct RowFeed {
+    const RowSource* source;
+};
+
+// The row source's answer, or nullptr where it threw (libpng then abandons the file).
+const uint8_t* next_row(const RowFeed& feed, int y) noexcept {
+    try {
+        return (*feed.source)(y);
+    } catch (...) {
+        return nullptr;
     }
-    return out;
 }
 
 // The libpng calls, free of C++ objects with destructors (libpng errors longjmp out of here).
 // Returns false with `error` filled in.
-bool encode(std::FILE* file, const EncodedImage& image, png_bytepp rows, ErrorText& error) {
+bool encode(std::FILE* file, const EncodedImage& image, const RowFeed& feed, ErrorText& error) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_error, on_warning);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
@@ -75,7 +71,11 @@ bool encode(std::FILE* file, const EncodedImage& image, png_bytepp rows, ErrorTe
     png_set_compression_level(png, 1);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
     png_write_info(png, info);
-    png_write_image(png, rows);
+    for (int y = 0; y < image.height; ++y) {
+        const uint8_t* row = next_row(feed, y);
+        if (!row) png_error(png, "the image was abandoned before it was complete");
+        png_write_row(png, row);
+    }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     return true;
@@ -83,19 +83,40 @@ bool encode(std::FILE* file, const EncodedImage& image, png_bytepp rows, ErrorTe
 
 }  // namespace
 
-void write_png(const EncodedImage& image, const std::string& path) {
-    auto bytes = sample_bytes(image);
-    const size_t stride = bytes.size() / size_t(image.height);
-    std::vector<png_bytep> rows(size_t(image.height));
-    for (int y = 0; y < image.height; ++y) rows[size_t(y)] = bytes.data() + size_t(y) * stride;
+void png_sample_bytes(const EncodedImage& image, int y, uint8_t* out) {
+    const size_t n = size_t(image.width) * image.channels;
+    const float* values = image.values.data() + size_t(y) * n;
+    if (image.maxval > 255) {
+        for (size_t i = 0; i < n; ++i) {
+            const unsigned v = unsigned(values[i]);
+            out[2 * i] = uint8_t(v >> 8);
+            out[2 * i + 1] = uint8_t(v & 0xff);
+        }
+    } else {
+        for (size_t i = 0; i < n; ++i) out[i] = uint8_t(unsigned(values[i]));
+    }
+}
 
+size_t png_row_bytes(const EncodedImage& image) {
+    return size_t(image.width) * image.channels * (image.maxval > 255 ? 2 : 1);
+}
+
+void write_png_rows(const EncodedImage& header, const RowSource& rows, const std::string& path) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "wb"), std::fclose);
     if (!file) throw std::runtime_error(std::strerror(errno));
     ErrorText error;
-    const bool ok = encode(file.get(), image, rows.data(), error);
+    const bool ok = encode(file.get(), header, RowFeed{&rows}, error);
     const bool closed = std::fclose(file.release()) == 0;
     if (!ok) throw std::runtime_error(error.text);
     if (!closed) throw std::runtime_error("the disk may be full");
+}
+
+void write_png(const EncodedImage& image, const std::string& path) {
+    std::vector<uint8_t, DefaultInit<uint8_t>> row(png_row_bytes(image));
+    write_png_rows(image, [&](int y) {
+        png_sample_bytes(image, y, row.data());
+        return row.data();
+    }, path);
 }
 
 }  // namespace lumen::render

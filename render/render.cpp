@@ -45,8 +45,28 @@ std::vector<Block> make_blocks(int x0, int y0, int x1, int y1, int size) {
 
 }  // namespace
 
+namespace {
+
+struct Area {
+    int x0, y0, x1, y1;  // inclusive
+};
+
+Area render_area(const RenderOptions& options) {
+    return {std::clamp(options.start_col, 0, options.width - 1),
+            std::clamp(options.start_row, 0, options.height - 1),
+            options.end_col < 0 ? options.width - 1 : std::min(options.end_col, options.width - 1),
+            options.end_row < 0 ? options.height - 1 : std::min(options.end_row, options.height - 1)};
+}
+
+}  // namespace
+
+bool covers_whole_image(const RenderOptions& options) {
+    const Area a = render_area(options);
+    return a.x0 == 0 && a.y0 == 0 && a.x1 == options.width - 1 && a.y1 == options.height - 1;
+}
+
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats,
-             const Progress& progress) {
+             const Progress& progress, const BlockDone& block_done) {
     const auto started = std::chrono::steady_clock::now();
     if (!scene.unsupported.empty()) {
         const scene::Unsupported& u = scene.unsupported.front();
@@ -76,14 +96,10 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
     Image image;
     image.width = options.width;
     image.height = options.height;
-    const int x0 = std::clamp(options.start_col, 0, options.width - 1);
-    const int y0 = std::clamp(options.start_row, 0, options.height - 1);
-    const int x1 = options.end_col < 0 ? options.width - 1 : std::min(options.end_col, options.width - 1);
-    const int y1 = options.end_row < 0 ? options.height - 1 : std::min(options.end_row, options.height - 1);
+    const auto [x0, y0, x1, y1] = render_area(options);
     // The blocks write every pixel of the render area, so only a partial render needs zeroes
     // (zeroing 9.6 MB at 800x600 first took its page faults on one thread).
-    const bool whole = x0 == 0 && y0 == 0 && x1 == options.width - 1 && y1 == options.height - 1;
-    if (whole)
+    if (covers_whole_image(options))
         image.pixels.resize(size_t(image.width) * image.height * 5);
     else
         image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);
@@ -111,6 +127,7 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
             for (size_t b = next++; b < blocks.size(); b = next++) {
                 const Block& k = blocks[b];
                 blocks_renderer.render(k.left, k.top, k.right, k.bottom, image, state, primary);
+                if (block_done) block_done(image, k.left, k.top, k.right, k.bottom);
                 std::lock_guard lock(progress_mutex);
                 ++finished;
                 if (progress) progress(double(finished) / blocks.size());

@@ -48,9 +48,16 @@ struct RenderStats {
 // Progress callback: fraction done in [0,1]. Called from worker threads, serialised.
 using Progress = std::function<void(double)>;
 
+// Called by a worker thread as soon as a block's pixels [left, right] x [top, bottom]
+// (inclusive) are final; calls for different blocks may run at the same time.
+using BlockDone = std::function<void(const Image&, int left, int top, int right, int bottom)>;
+
+// False for a partial render (+SR +ER +SC +EC that leave out part of the image).
+bool covers_whole_image(const RenderOptions& options);
+
 // Renders the scene. Throws LumenError if the scene uses something the renderer cannot draw
 // (with the location of the offending item).
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
-             const Progress& progress = {});
+             const Progress& progress = {}, const BlockDone& block_done = {});
 
 }  // namespace lumen::render

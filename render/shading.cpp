@@ -100,6 +100,14 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     return shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors, state.counters);
 }
 
+// c^e for a highlight, 0 where it is below 1e-34: c^e <= exp(e (c - 1)) since log c <= c - 1,
+// so the test is safe, and it skips the pow on most of a surface (a tight highlight's exponent
+// is in the hundreds). Nothing that small can show in a pixel.
+double highlight_power(double c, double e) {
+    if (e * (c - 1) < -78) return 0;
+    return std::pow(c, e);
+}
+
 glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm::dvec3& ldir,
                       double cos_light) {
     glm::dvec3 out(0);
@@ -107,9 +115,10 @@ glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm:
         const glm::dvec3 rv = s.view - 2 * glm::dot(s.view, s.normal) * s.normal;
         const double c = glm::dot(rv, ldir);
         if (c > 0 && !(f.phong_size >= 60 && c <= 0.0008)) {
-            const double k = f.phong * std::pow(c, f.phong_size);
-            out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
-                                  : glm::dvec3(k);
+            const double k = f.phong * highlight_power(c, f.phong_size);
+            if (k > 0)
+                out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
+                                      : glm::dvec3(k);
         }
     }
     if (f.specular > 0) {
@@ -117,9 +126,10 @@ glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm:
         const double len = glm::length(h);
         const double c = len > 0 ? glm::dot(h, s.normal) / len : 0;
         if (c > 0) {
-            const double k = f.specular * std::pow(c, 1.0 / f.roughness);
-            out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
-                                  : glm::dvec3(k);
+            const double k = f.specular * highlight_power(c, 1.0 / f.roughness);
+            if (k > 0)
+                out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
+                                      : glm::dvec3(k);
         }
     }
     return out;
