@@ -43,10 +43,10 @@ for scene in "${scenes[@]}"; do
     done
     mlw=$(median "${lw[@]}") mlc=$(median "${lc[@]}") mpw=$(median "${pw[@]}") mpc=$(median "${pc[@]}")
     ratio=$(echo "$mlw / $mpw" | bc -l)
-    printf '%-16s %9.2f %9.2f %9.2f %9.2f %7.2f\n' "$name" "$mlw" "$mlc" "$mpw" "$mpc" "$ratio"
+    printf '%-16s %9.3f %9.2f %9.3f %9.2f %7.3f\n' "$name" "$mlw" "$mlc" "$mpw" "$mpc" "$ratio"
     worst=$(echo "if ($ratio > $worst) $ratio else $worst" | bc -l)
     log_sum=$(echo "$log_sum + l($ratio)" | bc -l)
     count=$((count + 1))
 done
-[ "$count" -gt 0 ] && printf 'wall ratio lumen/povray over %d scenes (median of %d runs): worst %.2f, geometric mean %.2f\n' \
+[ "$count" -gt 0 ] && printf 'wall ratio lumen/povray over %d scenes (median of %d runs): worst %.3f, geometric mean %.3f\n' \
     "$count" "$repeats" "$worst" "$(echo "e($log_sum / $count)" | bc -l)"
