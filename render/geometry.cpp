@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 
@@ -67,6 +68,28 @@ bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, const
     return intersect(*static_cast<const BoxShape*>(r.shape), local, from, tmax, hit.shape);
 }
 
+// The Hit of a nearest-hit search's winner at distance t.
+void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit& best, Hit& hit) {
+    const Node& leaf = store.nodes[best.leaf];
+    hit.t = t;
+    hit.point = ray.at(t);
+    glm::dvec3 n = leaf.identity ? best.shape.normal
+                                 : store.transforms[leaf.xf].normal(best.shape.normal);
+    double len = glm::length(n);
+    n = len > 0 && std::isfinite(len) ? n / len : glm::dvec3(0, 1, 0);
+    hit.normal = leaf.flip ? -n : n;
+    hit.uv = best.shape.uv;
+    hit.object = leaf.object;
+    hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
+    hit.interior_texture = leaf.interior_texture;
+    hit.interior = leaf.interior;
+    hit.interior_id = leaf.object;
+    hit.no_image = leaf.no_image;
+    hit.no_reflection = leaf.no_reflection;
+    hit.double_illuminate = leaf.double_illuminate;
+    hit.no_radiosity = leaf.no_radiosity;
+}
+
 }  // namespace
 
 struct Geometry::Impl {
@@ -77,6 +100,7 @@ struct Geometry::Impl {
     Aabb all_bounded;                 // around all of bounded_boxes
     Bvh bvh;
     size_t primitives = 0;
+    bool listable = true;  // every root is a direct kind: visit_shadow_hits works
 };
 
 Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -99,6 +123,8 @@ Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) 
     }
     impl_->bvh.build(boxes, 2);
     for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(make_root(store, finite[i]));
+    for (const auto* list : {&impl_->bounded, &impl_->unbounded})
+        for (const Root& r : *list) impl_->listable = impl_->listable && r.kind != Root::Kind::Node;
     for (const Root& r : impl_->bounded) {
         impl_->bounded_boxes.push_back(store.nodes[r.node].surface);
         impl_->all_bounded.expand(store.nodes[r.node].surface);
@@ -151,25 +177,72 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     }
     if (!found) return false;
 
-    const Node& leaf = store.nodes[best.leaf];
-    hit.t = best_t;
-    hit.point = ray.at(best_t);
-    glm::dvec3 n = leaf.identity ? best.shape.normal
-                                 : store.transforms[leaf.xf].normal(best.shape.normal);
-    double len = glm::length(n);
-    n = len > 0 && std::isfinite(len) ? n / len : glm::dvec3(0, 1, 0);
-    hit.normal = leaf.flip ? -n : n;
-    hit.uv = best.shape.uv;
-    hit.object = leaf.object;
-    hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
-    hit.interior_texture = leaf.interior_texture;
-    hit.interior = leaf.interior;
-    hit.interior_id = leaf.object;
-    hit.no_image = leaf.no_image;
-    hit.no_reflection = leaf.no_reflection;
-    hit.double_illuminate = leaf.double_illuminate;
-    hit.no_radiosity = leaf.no_radiosity;
+    resolve_hit(store, ray, best_t, best, hit);
     return true;
+}
+
+int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
+                                void* context) const {
+    if (!impl_->listable) return -1;
+    const NodeStore& store = impl_->store;
+    struct Found {  // no default member values: the array is not cleared on every call
+        double t;
+        uint32_t root;
+        glm::dvec3 normal;
+        glm::dvec2 uv;
+        const scene::LayeredTexture* texture;
+    };
+    static_assert(std::is_trivially_default_constructible_v<Found>);
+    Found found[kMaxListedHits];
+    int n = 0;
+    bool overflow = false;
+    const LocalRay local{ray.origin, ray.dir};
+    // Plain spheres, planes and boxes report their next surface past `from` (each is crossed
+    // at most twice), so a few calls per object list them all.
+    auto collect = [&](const Root& r) {
+        NodeHit h;
+        for (double from = t_min; !overflow && intersect_root(store, r, ray, local, from, t_max, true, h);
+             from = h.shape.t) {
+            if (n == kMaxListedHits) overflow = true;
+            else found[n++] = {h.shape.t, r.node, h.shape.normal, h.shape.uv, h.shape.texture};
+        }
+    };
+    for (const Root& r : impl_->unbounded) collect(r);
+    const SlabRay slab(ray.origin, ray.dir);
+    const size_t n_bounded = impl_->bounded.size();
+    if (n_bounded <= kDirectRoots) {
+        if (n_bounded && slab.hits(impl_->all_bounded, t_min, t_max))
+            for (size_t i = 0; i < n_bounded; ++i)
+                if (slab.hits(impl_->bounded_boxes[i], t_min, t_max)) collect(impl_->bounded[i]);
+    } else {
+        double prune = t_max;
+        impl_->bvh.traverse(slab, t_min, prune, [&](uint32_t i) { collect(impl_->bounded[i]); });
+    }
+    if (overflow) return -1;
+    // Nearest first; at equal t the earlier object in scene order, as intersect() decides.
+    int order[kMaxListedHits];
+    for (int i = 0; i < n; ++i) {
+        int j = i;
+        for (; j > 0; --j) {
+            const Found& a = found[order[j - 1]];
+            if (a.t < found[i].t || (a.t == found[i].t && a.root < found[i].root)) break;
+            order[j] = order[j - 1];
+        }
+        order[j] = i;
+    }
+    Hit hit;
+    NodeHit winner;
+    for (int i = 0; i < n; ++i) {
+        const Found& f = found[order[i]];
+        winner.leaf = f.root;  // a direct root is its own leaf
+        winner.shape.t = f.t;
+        winner.shape.normal = f.normal;
+        winner.shape.uv = f.uv;
+        winner.shape.texture = f.texture;
+        resolve_hit(store, ray, f.t, winner, hit);
+        if (!visit(context, hit)) return i + 1;
+    }
+    return n;
 }
 
 bool Geometry::inside(const scene::Object& object, const glm::dvec3& p) {

@@ -23,6 +23,16 @@ public:
     // Thread-safe (const, no shared mutable state).
     bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow = false) const;
 
+    // Every surface a shadow ray crosses with t_min < t < t_max, nearest first (equal t: scene
+    // order), handed to `visit` until it returns false. Returns how many were handed over, or
+    // -1, before any, where the scene cannot list them in one pass: objects other than plain
+    // spheres, planes and boxes (CSG, transformed, clipped or bounded ones), or more than
+    // kMaxListedHits hits. Callers then step from hit to hit with intersect().
+    static constexpr int kMaxListedHits = 32;
+    using HitVisitor = bool (*)(void* context, const Hit& hit);
+    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
+                          void* context) const;
+
     // True if world point p is inside `object` (used for media/fog decisions and tests).
     static bool inside(const scene::Object& object, const glm::dvec3& p);
 

@@ -12,6 +12,14 @@ public:
     // Nearest hit with t_min < t < t_max; `shadow` skips no_shadow objects.
     virtual bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit,
                            bool shadow) const = 0;
+    // Every surface a shadow ray crosses with t_min < t < t_max, nearest first, handed to
+    // `visit` until it returns false; returns how many, or -1 (before any) where the geometry
+    // cannot list them in one pass (callers then step with intersect()).
+    using HitVisitor = bool (*)(void* context, const Hit& hit);
+    virtual int visit_shadow_hits(const Ray&, double /*t_min*/, double /*t_max*/,
+                                  HitVisitor, void* /*context*/) const {
+        return -1;
+    }
 };
 
 }  // namespace lumen::render

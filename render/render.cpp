@@ -25,6 +25,10 @@ public:
                    bool shadow) const override {
         return g_.intersect(ray, t_min, t_max, hit, shadow);
     }
+    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
+                          void* context) const override {
+        return g_.visit_shadow_hits(ray, t_min, t_max, visit, context);
+    }
 
 private:
     const Geometry& g_;

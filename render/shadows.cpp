@@ -25,31 +25,92 @@ glm::dvec3 interior_fade(const scene::Interior& in, double depth, bool shadow_ra
     return fc + (glm::dvec3(1) - fc) / (1 + std::pow(depth / in.fade_distance, in.fade_power));
 }
 
+namespace {
+
+// The light left after the surfaces a shadow ray crosses, taken nearest first: POV's loop of
+// one nearest-hit query per surface, each from the last surface passed, ignoring surfaces
+// closer than the tolerance to it. Both ways of finding the surfaces (one query per surface,
+// or all of them listed at once) feed this, so they agree.
+class ShadowWalk {
+public:
+    ShadowWalk(const glm::dvec3& dir, double distance, const InteriorList& interiors,
+               TraceCounters& counters)
+        : dir_(dir), remaining_(distance), inside_(interiors), counters_(counters) {}
+
+    // Starts the next query; false where POV's loop ends instead (the rest of the way is
+    // within the tolerance, or the surface bound is reached). t_max: the query's reach.
+    bool next_query(double& t_max) {
+        t_max = remaining_ - kShadowTolerance;
+        if (steps_ == kMaxShadowSurfaces || t_max <= kShadowTolerance) return false;
+        ++steps_;
+        ++counters_.shadow_rays;
+        return true;
+    }
+    // The surface the query found, `depth` past the last one. False once no light is left.
+    bool cross(const Hit& hit, double depth) {
+        filter_ *= surface_filter(facing_texture(hit, dir_), hit.point);
+        if (is_black(filter_)) {
+            filter_ = glm::dvec3(0);
+            return false;
+        }
+        // Fake caustics brighten light passing a transparent surface head-on.
+        if (hit.interior && hit.interior->caustics != 0)
+            filter_ *= 1 + std::pow(std::fabs(glm::dot(hit.normal, dir_)), 45 * hit.interior->caustics);
+        const int where = inside_.find(hit.interior_id);
+        if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
+        inside_.toggle(hit.interior_id, hit.interior);
+        remaining_ -= depth;
+        return true;
+    }
+    const glm::dvec3& filter() const { return filter_; }
+
+private:
+    glm::dvec3 dir_;
+    double remaining_;
+    InteriorList inside_;
+    TraceCounters& counters_;
+    glm::dvec3 filter_{1};
+    int steps_ = 0;
+};
+
+// Feeds a listing of every surface, nearest first, to the walk: a surface is what the walk's
+// current query would find unless it lies within the tolerance of the last one passed.
+struct Listing {
+    ShadowWalk& walk;
+    double t_max;       // reach of the current query, from `passed`
+    double passed = 0;  // distance of the last surface passed
+
+    static bool visit(void* context, const Hit& hit) {
+        Listing& l = *static_cast<Listing*>(context);
+        const double depth = hit.t - l.passed;
+        if (depth <= kShadowTolerance) return true;  // the query starts beyond it
+        if (!(depth < l.t_max) || !l.walk.cross(hit, depth)) return false;
+        l.passed = hit.t;
+        return l.walk.next_query(l.t_max);
+    }
+};
+
+}  // namespace
+
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
                          TraceCounters& counters) {
-    glm::dvec3 filter(1);
-    InteriorList inside = interiors;
+    ShadowWalk walk(dir, distance, interiors, counters);
+    double t_max;
+    if (!walk.next_query(t_max)) return walk.filter();
+    // Plain scenes list every surface in one pass instead of one query per surface.
+    Listing listing{walk, t_max};
+    if (geometry.visit_shadow_hits(Ray{point, dir}, kShadowTolerance, distance - kShadowTolerance,
+                                   &Listing::visit, &listing) >= 0)
+        return walk.filter();
     Ray ray{point, dir};
-    double remaining = distance;
     Hit hit;  // one for the whole loop: intersect() sets every field of a hit it reports
-    for (int i = 0; i < kMaxShadowSurfaces; ++i) {
-        const double t_max = remaining - kShadowTolerance;
-        if (t_max <= kShadowTolerance) break;
-        ++counters.shadow_rays;
+    do {
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
-        filter *= surface_filter(facing_texture(hit, dir), hit.point);
-        if (is_black(filter)) return glm::dvec3(0);
-        // Fake caustics brighten light passing a transparent surface head-on.
-        if (hit.interior && hit.interior->caustics != 0)
-            filter *= 1 + std::pow(std::fabs(glm::dot(hit.normal, dir)), 45 * hit.interior->caustics);
-        const int where = inside.find(hit.interior_id);
-        if (where >= 0 && hit.interior) filter *= interior_fade(*hit.interior, hit.t, true);
-        inside.toggle(hit.interior_id, hit.interior);
+        if (!walk.cross(hit, hit.t)) break;
         ray.origin = hit.point;
-        remaining -= hit.t;
-    }
-    return filter;
+    } while (walk.next_query(t_max));
+    return walk.filter();
 }
 
 }  // namespace lumen::render

@@ -1,0 +1,122 @@
+// Shadow rays through filtering surfaces: listing every surface in one pass (plain spheres,
+// planes and boxes) gives the light, and the query count, of POV's one query per surface.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "render/geometry.hpp"
+#include "render/geometry_test_util.hpp"
+#include "render/shadows.hpp"
+
+namespace lumen::render {
+namespace {
+
+using namespace testing;
+
+// Geometry as an Intersector, with or without the one-pass listing.
+class Stepping final : public Intersector {
+public:
+    Stepping(const Geometry& g, bool list) : g_(g), list_(list) {}
+    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow) const override {
+        return g_.intersect(ray, t_min, t_max, hit, shadow);
+    }
+    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
+                          void* context) const override {
+        return list_ ? g_.visit_shadow_hits(ray, t_min, t_max, visit, context) : -1;
+    }
+
+private:
+    const Geometry& g_;
+    bool list_;
+};
+
+scene::LayeredTexture filtering(std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0.3, 1);
+    auto pigment = std::make_shared<scene::Pigment>();
+    pigment->colour = {u(rng), u(rng), u(rng), u(rng) * 0.8, u(rng) * 0.2};
+    auto texture = std::make_shared<scene::Texture>();
+    texture->pigment = pigment;
+    return {texture};
+}
+
+std::shared_ptr<scene::Object> glassy(scene::Shape shape, std::mt19937& rng) {
+    auto o = make(std::move(shape));
+    o->texture = filtering(rng);
+    scene::Interior in;
+    in.fade_distance = 2;
+    in.fade_power = 1001;  // exponential fade: depends on the depth inside
+    in.fade_colour = {0.5, 0.8, 0.9};
+    o->interior = in;
+    return o;
+}
+
+TEST(ShadowFilter, ListingEveryCrossingAgreesWithOneQueryPerSurface) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-3, 3), r(0.3, 1.2);
+    std::vector<scene::ObjectPtr> objects;
+    for (int i = 0; i < 10; ++i)  // more than the direct-test limit: the BVH path lists too
+        objects.push_back(glassy(scene::Sphere{{u(rng), u(rng), u(rng)}, r(rng)}, rng));
+    for (int i = 0; i < 4; ++i) {
+        const glm::dvec3 c{u(rng), u(rng), u(rng)};
+        objects.push_back(glassy(scene::Box{c - r(rng), c + r(rng)}, rng));
+    }
+    objects.push_back(glassy(scene::Plane{{0, 1, 0}, -2}, rng));
+    // Coincident surfaces: a box face on the plane and a sphere twice.
+    objects.push_back(glassy(scene::Box{{-1, -2, -1}, {1, -1.5, 1}}, rng));
+    objects.push_back(glassy(scene::Sphere{{0.5, 0.5, 0.5}, 0.7}, rng));
+    objects.push_back(glassy(scene::Sphere{{0.5, 0.5, 0.5}, 0.7}, rng));
+    const Geometry geometry(scene_of(objects));
+    const Stepping listing(geometry, true), stepping(geometry, false);
+
+    int crossed = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::dvec3 from{u(rng) * 1.5, u(rng) * 1.5, u(rng) * 1.5};
+        glm::dvec3 to{u(rng) * 3, 6, u(rng) * 3};
+        if (i % 3 == 0) to = {u(rng) * 3, -6, u(rng) * 3};  // through the plane
+        const glm::dvec3 dir = glm::normalize(to - from);
+        const double distance = glm::length(to - from);
+        TraceCounters a, b;
+        const glm::dvec3 fa = shadow_filter(listing, from, dir, distance, {}, a);
+        const glm::dvec3 fb = shadow_filter(stepping, from, dir, distance, {}, b);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(fa[c], fb[c], 1e-12 + 1e-9 * fb[c]) << i;
+        EXPECT_EQ(a.shadow_rays, b.shadow_rays) << i;
+        crossed += b.shadow_rays > 2;
+    }
+    EXPECT_GT(crossed, 500);  // the rays do cross several surfaces
+}
+
+TEST(ShadowFilter, SceneWithCsgStepsFromSurfaceToSurface) {
+    std::mt19937 rng(2);
+    std::vector<scene::ObjectPtr> objects{
+        glassy(scene::Sphere{{0, 0, 0}, 1}, rng),
+        csg(scene::CsgOp::Difference, {glassy(scene::Sphere{{0, 3, 0}, 1}, rng),
+                                       glassy(scene::Sphere{{0, 3.5, 0}, 0.5}, rng)})};
+    const Geometry geometry(scene_of(objects));
+    int visited = 0;
+    EXPECT_EQ(geometry.visit_shadow_hits(
+                  ray({0, -5, 0}, {0, 1, 0}), 1e-3, 100,
+                  [](void* n, const Hit&) { return ++*static_cast<int*>(n) > 0; }, &visited),
+              -1);
+    EXPECT_EQ(visited, 0);
+    // Plain objects list every crossing, nearest first, and stop when told.
+    const Geometry plain(scene_of({glassy(scene::Sphere{{0, 0, 0}, 1}, rng),
+                                   glassy(scene::Box{{-1, 2, -1}, {1, 4, 1}}, rng)}));
+    std::vector<double> ts;
+    auto record = [](void* v, const Hit& h) {
+        static_cast<std::vector<double>*>(v)->push_back(h.t);
+        return true;
+    };
+    EXPECT_EQ(plain.visit_shadow_hits(ray({0, -5, 0}, {0, 1, 0}), 1e-3, 100, record, &ts), 4);
+    ASSERT_EQ(ts.size(), 4u);
+    EXPECT_DOUBLE_EQ(ts[0], 4);
+    EXPECT_DOUBLE_EQ(ts[1], 6);
+    EXPECT_DOUBLE_EQ(ts[2], 7);
+    EXPECT_DOUBLE_EQ(ts[3], 9);
+    EXPECT_EQ(plain.visit_shadow_hits(ray({0, -5, 0}, {0, 1, 0}), 1e-3, 100,
+                                      [](void*, const Hit&) { return false; }, nullptr),
+              1);
+}
+
+}  // namespace
+}  // namespace lumen::render
