@@ -60,9 +60,11 @@ public:
         if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
         inside_.toggle(hit.interior_id, hit.interior);
         remaining_ -= depth;
+        ++crossings_;
         return true;
     }
     const glm::dvec3& filter() const { return filter_; }
+    int crossings() const { return crossings_; }
 
 private:
     glm::dvec3 dir_;
@@ -71,6 +73,7 @@ private:
     TraceCounters& counters_;
     glm::dvec3 filter_{1};
     int steps_ = 0;
+    int crossings_ = 0;
 };
 
 // Feeds a listing of every surface, nearest first, to the walk: a surface is what the walk's
@@ -96,20 +99,26 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
                          TraceCounters& counters) {
     ShadowWalk walk(dir, distance, interiors, counters);
-    double t_max;
-    if (!walk.next_query(t_max)) return walk.filter();
-    // Plain scenes list every surface in one pass instead of one query per surface.
-    Listing listing{walk, t_max};
-    if (geometry.visit_shadow_hits(Ray{point, dir}, kShadowTolerance, distance - kShadowTolerance,
-                                   &Listing::visit, &listing) >= 0)
-        return walk.filter();
     Ray ray{point, dir};
     Hit hit;  // one for the whole loop: intersect() sets every field of a hit it reports
-    do {
+    double t_max;
+    bool list = false;
+    while (walk.next_query(t_max)) {
+        // Past a first surface that lets light through, plain scenes list the rest in one
+        // pass. (Most shadow rays end at their first surface: finding only the nearest is
+        // cheaper there.)
+        if (list) {
+            list = false;
+            Listing listing{walk, t_max};
+            if (geometry.visit_shadow_hits(ray, kShadowTolerance, t_max, &Listing::visit,
+                                           &listing) >= 0)
+                break;
+        }
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
         if (!walk.cross(hit, hit.t)) break;
         ray.origin = hit.point;
-    } while (walk.next_query(t_max));
+        list = walk.crossings() == 1;
+    }
     return walk.filter();
 }
 

@@ -1,4 +1,4 @@
-// Shadow rays through filtering surfaces: listing every surface in one pass (plain spheres,
+// Shadow rays through filtering surfaces: listing the surfaces past the first in one pass (plain spheres,
 // planes and boxes) gives the light, and the query count, of POV's one query per surface.
 #include <cmath>
 #include <random>
