@@ -13,6 +13,7 @@
 
 #include "render/bvh.hpp"
 #include "render/node.hpp"
+#include "render/texture_layers.hpp"
 
 namespace lumen::render {
 namespace {
@@ -101,6 +102,7 @@ struct Geometry::Impl {
     Bvh bvh;
     size_t primitives = 0;
     bool listable = true;  // every root is a direct kind: visit_shadow_hits works
+    bool mostly_passes_light = false;
 };
 
 Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -123,8 +125,15 @@ Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) 
     }
     impl_->bvh.build(boxes, 2);
     for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(make_root(store, finite[i]));
+    size_t roots_passing_light = 0;
     for (const auto* list : {&impl_->bounded, &impl_->unbounded})
-        for (const Root& r : *list) impl_->listable = impl_->listable && r.kind != Root::Kind::Node;
+        for (const Root& r : *list) {
+            impl_->listable = impl_->listable && r.kind != Root::Kind::Node;
+            const Node& n = store.nodes[r.node];
+            roots_passing_light += may_pass_light(n.texture) || may_pass_light(n.interior_texture);
+        }
+    impl_->mostly_passes_light =
+        2 * roots_passing_light >= impl_->bounded.size() + impl_->unbounded.size();
     for (const Root& r : impl_->bounded) {
         impl_->bounded_boxes.push_back(store.nodes[r.node].surface);
         impl_->all_bounded.expand(store.nodes[r.node].surface);
@@ -180,6 +189,9 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
     resolve_hit(store, ray, best_t, best, hit);
     return true;
 }
+
+bool Geometry::lists_shadow_hits() const { return impl_->listable; }
+bool Geometry::mostly_passes_light() const { return impl_->mostly_passes_light; }
 
 int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
                                 void* context) const {

@@ -29,6 +29,9 @@ public:
     // spheres, planes and boxes (CSG, transformed, clipped or bounded ones), or more than
     // kMaxListedHits hits. Callers then step from hit to hit with intersect().
     static constexpr int kMaxListedHits = 32;
+    bool lists_shadow_hits() const;
+    // At least half the objects may let light through (filter or transmit somewhere).
+    bool mostly_passes_light() const;
     using HitVisitor = bool (*)(void* context, const Hit& hit);
     int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
                           void* context) const;

@@ -25,6 +25,10 @@ public:
                    bool shadow) const override {
         return g_.intersect(ray, t_min, t_max, hit, shadow);
     }
+    Listing shadow_listing() const override {
+        if (!g_.lists_shadow_hits()) return Listing::Never;
+        return g_.mostly_passes_light() ? Listing::FromStart : Listing::AfterFirstSurface;
+    }
     int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
                           void* context) const override {
         return g_.visit_shadow_hits(ray, t_min, t_max, visit, context);

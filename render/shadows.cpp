@@ -102,11 +102,12 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
     Ray ray{point, dir};
     Hit hit;  // one for the whole loop: intersect() sets every field of a hit it reports
     double t_max;
-    bool list = false;
+    // Plain scenes can list the surfaces in one pass instead of one query per surface: from
+    // the start where most objects let light through, else past a first surface that does
+    // (most shadow rays end at their first surface, where one nearest-hit query is cheaper).
+    const Intersector::Listing when = geometry.shadow_listing();
+    bool list = when == Intersector::Listing::FromStart;
     while (walk.next_query(t_max)) {
-        // Past a first surface that lets light through, plain scenes list the rest in one
-        // pass. (Most shadow rays end at their first surface: finding only the nearest is
-        // cheaper there.)
         if (list) {
             list = false;
             Listing listing{walk, t_max};
@@ -117,7 +118,7 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
         if (!walk.cross(hit, hit.t)) break;
         ray.origin = hit.point;
-        list = walk.crossings() == 1;
+        list = when == Intersector::Listing::AfterFirstSurface && walk.crossings() == 1;
     }
     return walk.filter();
 }

@@ -8,27 +8,29 @@
 #include "render/geometry.hpp"
 #include "render/geometry_test_util.hpp"
 #include "render/shadows.hpp"
+#include "render/texture_layers.hpp"
 
 namespace lumen::render {
 namespace {
 
 using namespace testing;
 
-// Geometry as an Intersector, with or without the one-pass listing.
+// Geometry as an Intersector that lists surfaces when `when` says.
 class Stepping final : public Intersector {
 public:
-    Stepping(const Geometry& g, bool list) : g_(g), list_(list) {}
+    Stepping(const Geometry& g, Listing when) : g_(g), when_(when) {}
+    Listing shadow_listing() const override { return when_; }
     bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow) const override {
         return g_.intersect(ray, t_min, t_max, hit, shadow);
     }
     int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
                           void* context) const override {
-        return list_ ? g_.visit_shadow_hits(ray, t_min, t_max, visit, context) : -1;
+        return when_ != Listing::Never ? g_.visit_shadow_hits(ray, t_min, t_max, visit, context) : -1;
     }
 
 private:
     const Geometry& g_;
-    bool list_;
+    Listing when_;
 };
 
 scene::LayeredTexture filtering(std::mt19937& rng) {
@@ -67,7 +69,11 @@ TEST(ShadowFilter, ListingEveryCrossingAgreesWithOneQueryPerSurface) {
     objects.push_back(glassy(scene::Sphere{{0.5, 0.5, 0.5}, 0.7}, rng));
     objects.push_back(glassy(scene::Sphere{{0.5, 0.5, 0.5}, 0.7}, rng));
     const Geometry geometry(scene_of(objects));
-    const Stepping listing(geometry, true), stepping(geometry, false);
+    EXPECT_TRUE(geometry.lists_shadow_hits());
+    EXPECT_TRUE(geometry.mostly_passes_light());
+    using L = Intersector::Listing;
+    const Stepping from_start(geometry, L::FromStart), after_first(geometry, L::AfterFirstSurface),
+        stepping(geometry, L::Never);
 
     int crossed = 0;
     for (int i = 0; i < 3000; ++i) {
@@ -76,11 +82,14 @@ TEST(ShadowFilter, ListingEveryCrossingAgreesWithOneQueryPerSurface) {
         if (i % 3 == 0) to = {u(rng) * 3, -6, u(rng) * 3};  // through the plane
         const glm::dvec3 dir = glm::normalize(to - from);
         const double distance = glm::length(to - from);
-        TraceCounters a, b;
-        const glm::dvec3 fa = shadow_filter(listing, from, dir, distance, {}, a);
+        TraceCounters b;
         const glm::dvec3 fb = shadow_filter(stepping, from, dir, distance, {}, b);
-        for (int c = 0; c < 3; ++c) EXPECT_NEAR(fa[c], fb[c], 1e-12 + 1e-9 * fb[c]) << i;
-        EXPECT_EQ(a.shadow_rays, b.shadow_rays) << i;
+        for (const Stepping* listing : {&from_start, &after_first}) {
+            TraceCounters a;
+            const glm::dvec3 fa = shadow_filter(*listing, from, dir, distance, {}, a);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(fa[c], fb[c], 1e-12 + 1e-9 * fb[c]) << i;
+            EXPECT_EQ(a.shadow_rays, b.shadow_rays) << i;
+        }
         crossed += b.shadow_rays > 2;
     }
     EXPECT_GT(crossed, 500);  // the rays do cross several surfaces
@@ -99,6 +108,7 @@ TEST(ShadowFilter, SceneWithCsgStepsFromSurfaceToSurface) {
                   [](void* n, const Hit&) { return ++*static_cast<int*>(n) > 0; }, &visited),
               -1);
     EXPECT_EQ(visited, 0);
+    EXPECT_FALSE(geometry.lists_shadow_hits());
     // Plain objects list every crossing, nearest first, and stop when told.
     const Geometry plain(scene_of({glassy(scene::Sphere{{0, 0, 0}, 1}, rng),
                                    glassy(scene::Box{{-1, 2, -1}, {1, 4, 1}}, rng)}));
@@ -116,6 +126,48 @@ TEST(ShadowFilter, SceneWithCsgStepsFromSurfaceToSurface) {
     EXPECT_EQ(plain.visit_shadow_hits(ray({0, -5, 0}, {0, 1, 0}), 1e-3, 100,
                                       [](void*, const Hit&) { return false; }, nullptr),
               1);
+}
+
+scene::TexturePtr plain(scene::Colour c) {
+    auto pigment = std::make_shared<scene::Pigment>();
+    pigment->colour = c;
+    auto texture = std::make_shared<scene::Texture>();
+    texture->pigment = pigment;
+    return texture;
+}
+
+TEST(ShadowFilter, WhichTexturesMayPassLight) {
+    const scene::Colour opaque{0.5, 0.5, 0.5, 0, 0}, glass{1, 1, 1, 0.9, 0};
+    const scene::LayeredTexture solid{plain(opaque)}, clear{plain(glass)};
+    EXPECT_FALSE(may_pass_light(nullptr));
+    EXPECT_FALSE(may_pass_light(&solid));
+    EXPECT_TRUE(may_pass_light(&clear));
+    // Layers multiply: one opaque layer stops the light.
+    const scene::LayeredTexture layered{plain(glass), plain(opaque)};
+    EXPECT_FALSE(may_pass_light(&layered));
+    // A colour_map entry with transmit, a pigment_map entry that filters.
+    auto mapped = std::make_shared<scene::Pigment>();
+    mapped->pattern.type = scene::PatternType::Gradient;
+    mapped->colour_map = {{0, opaque}, {1, {0, 0, 0, 0, 0.5}}};
+    auto texture = std::make_shared<scene::Texture>();
+    texture->pigment = mapped;
+    const scene::LayeredTexture gradient{texture};
+    EXPECT_TRUE(may_pass_light(&gradient));
+    auto nested = std::make_shared<scene::Pigment>();
+    nested->pattern.type = scene::PatternType::Checker;
+    nested->pigment_map = {{0, std::make_shared<scene::Pigment>()}, {1, mapped}};
+    auto nested_texture = std::make_shared<scene::Texture>();
+    nested_texture->pigment = nested;
+    const scene::LayeredTexture checker{nested_texture};
+    EXPECT_TRUE(may_pass_light(&checker));
+    // texture_map entries are resolved through one of their layers: any may count.
+    auto map_texture = std::make_shared<scene::Texture>();
+    map_texture->pattern.type = scene::PatternType::Checker;
+    map_texture->texture_map = {{0, solid}, {1, layered}};
+    const scene::LayeredTexture by_map{map_texture};
+    EXPECT_TRUE(may_pass_light(&by_map));
+    map_texture->texture_map = {{0, solid}, {1, solid}};
+    EXPECT_FALSE(may_pass_light(&by_map));
 }
 
 }  // namespace

@@ -62,4 +62,37 @@ glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3&
     return filter;
 }
 
+namespace {
+
+bool colour_passes(const scene::Colour& c) { return c.f != 0 || c.t != 0; }
+
+// Every colour the pigment can evaluate to, looked at without evaluating it (the default
+// colour maps are opaque).
+bool pigment_may_pass(const scene::Pigment* p) {
+    if (!p) return false;  // the default pigment: black
+    if (colour_passes(p->colour)) return true;
+    for (const scene::ColourMapEntry& e : p->colour_map)
+        if (colour_passes(e.colour)) return true;
+    for (const scene::Pigment::MapEntry& e : p->pigment_map)
+        if (pigment_may_pass(e.pigment.get())) return true;
+    return false;
+}
+
+bool texture_may_pass(const scene::Texture& t) {
+    // A texture_map entry is resolved through one of its layers: any of them may count.
+    for (const scene::Texture::MapEntry& e : t.texture_map)
+        for (const scene::TexturePtr& layer : e.texture)
+            if (layer && texture_may_pass(*layer)) return true;
+    return pigment_may_pass(t.pigment.get());
+}
+
+}  // namespace
+
+bool may_pass_light(const scene::LayeredTexture* layers) {
+    if (!layers || layers->empty()) return false;
+    for (const scene::TexturePtr& t : *layers)
+        if (!t || !texture_may_pass(*t)) return false;  // one opaque layer stops it all
+    return true;
+}
+
 }  // namespace lumen::render

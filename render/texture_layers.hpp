@@ -59,6 +59,10 @@ void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, Re
 // Product over layers of (rgb·filter + transmit): the light a surface lets through.
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p);
 
+// False when surface_filter is 0 at every point (no colour the texture can take has filter
+// or transmit); true when it may let light through somewhere.
+bool may_pass_light(const scene::LayeredTexture* layers);
+
 // The filter colour of one layer: rgb·f + t per channel.
 inline glm::dvec3 layer_filter(const scene::Colour& c) {
     return glm::dvec3(c.r, c.g, c.b) * c.f + glm::dvec3(c.t);
