@@ -103,6 +103,28 @@ struct Geometry::Impl {
     size_t primitives = 0;
     bool listable = true;  // every root is a direct kind: visit_shadow_hits works
     bool mostly_passes_light = false;
+
+    // Calls visit(root) for every unbounded root and every bounded one whose box the ray may
+    // meet within [t_min, limit]; `limit` may shrink as visit finds hits.
+    template <class Visit>
+    void for_each_candidate(const Ray& ray, double t_min, const double& limit, Visit&& visit) const {
+        for (const Root& r : unbounded) visit(r);
+        const SlabRay slab(ray.origin, ray.dir);
+        const size_t n = bounded.size();
+        if (n <= kDirectRoots) {
+            // A handful of objects: past the box around them all (one test culls most shadow
+            // rays), their own boxes cull as well as the BVH's inner nodes would.
+            if (n && slab.hits(all_bounded, t_min, limit))
+                for (size_t i = 0; i < n; ++i)
+                    if (slab.hits(bounded_boxes[i], t_min, limit)) visit(bounded[i]);
+        } else {
+            double prune = limit;
+            bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
+                visit(bounded[i]);
+                prune = limit;
+            });
+        }
+    }
 };
 
 Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -166,24 +188,7 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
             limit = next_up(best_t);
         }
     };
-    for (const Root& r : impl_->unbounded) test(r);
-    const SlabRay slab(ray.origin, ray.dir);
-    const size_t n_bounded = impl_->bounded.size();
-    if (n_bounded <= kDirectRoots) {
-        // A handful of objects: past the box around them all (one test culls most shadow
-        // rays), their own boxes cull as well as the BVH's inner nodes would.
-        const Root* roots = impl_->bounded.data();
-        const Aabb* boxes = impl_->bounded_boxes.data();
-        if (n_bounded && slab.hits(impl_->all_bounded, t_min, limit))
-            for (size_t i = 0; i < n_bounded; ++i)
-                if (slab.hits(boxes[i], t_min, limit)) test(roots[i]);
-    } else {
-        double prune = limit;
-        impl_->bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
-            test(impl_->bounded[i]);
-            prune = limit;
-        });
-    }
+    impl_->for_each_candidate(ray, t_min, limit, test);
     if (!found) return false;
 
     resolve_hit(store, ray, best_t, best, hit);
@@ -219,17 +224,7 @@ int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitV
             else found[n++] = {h.shape.t, r.node, h.shape.normal, h.shape.uv, h.shape.texture};
         }
     };
-    for (const Root& r : impl_->unbounded) collect(r);
-    const SlabRay slab(ray.origin, ray.dir);
-    const size_t n_bounded = impl_->bounded.size();
-    if (n_bounded <= kDirectRoots) {
-        if (n_bounded && slab.hits(impl_->all_bounded, t_min, t_max))
-            for (size_t i = 0; i < n_bounded; ++i)
-                if (slab.hits(impl_->bounded_boxes[i], t_min, t_max)) collect(impl_->bounded[i]);
-    } else {
-        double prune = t_max;
-        impl_->bvh.traverse(slab, t_min, prune, [&](uint32_t i) { collect(impl_->bounded[i]); });
-    }
+    impl_->for_each_candidate(ray, t_min, t_max, collect);
     if (overflow) return -1;
     // Nearest first; at equal t the earlier object in scene order, as intersect() decides.
     int order[kMaxListedHits];

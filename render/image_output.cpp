@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <stdexcept>
 #include <atomic>
 #include <condition_variable>
+#include <cstdio>
+#include <filesystem>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -202,34 +202,32 @@ void ImageEncoder::encode(const Image& image, int left, int top, int right, int 
 void ImageEncoder::write(const std::string& path) {
     namespace fs = std::filesystem;
     Impl& m = *impl_;
-    const FileType type = m.options.type;
-    const EncodedImage& pixels = m.out;
-    const fs::path target(path);
-    const fs::path tmp = temporary_path(path, type);
+    fs::path tmp;
+    std::string failure;
     if (m.writer.joinable()) {
         m.writer.join();  // every row is encoded by now
-        if (!m.failure.empty()) {
-            std::error_code ec;
-            fs::remove(m.tmp, ec);
-            throw LumenError({}, "cannot write '" + path + "': " + m.failure);
-        }
+        tmp = m.tmp;
+        failure = m.failure;
     } else {
-    try {
-        switch (type) {
-            case FileType::PNG: write_png(pixels, tmp.string()); break;
-            case FileType::PPM: write_ppm(pixels, tmp.string()); break;
-            case FileType::EXR: write_with_oiio(pixels, "openexr", tmp.string()); break;
-            case FileType::HDR: write_with_oiio(pixels, "hdr", tmp.string()); break;
-            case FileType::TIFF: write_with_oiio(pixels, "tiff", tmp.string()); break;
+        tmp = temporary_path(path, m.options.type);
+        try {
+            switch (m.options.type) {
+                case FileType::PNG: write_png(m.out, tmp.string()); break;
+                case FileType::PPM: write_ppm(m.out, tmp.string()); break;
+                case FileType::EXR: write_with_oiio(m.out, "openexr", tmp.string()); break;
+                case FileType::HDR: write_with_oiio(m.out, "hdr", tmp.string()); break;
+                case FileType::TIFF: write_with_oiio(m.out, "tiff", tmp.string()); break;
+            }
+        } catch (const std::runtime_error& e) {
+            failure = e.what();
         }
-    } catch (const std::runtime_error& failure) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw LumenError({}, "cannot write '" + path + "': " + failure.what());
-    }
     }
     std::error_code ec;
-    fs::rename(tmp, target, ec);
+    if (!failure.empty()) {
+        fs::remove(tmp, ec);
+        throw LumenError({}, "cannot write '" + path + "': " + failure);
+    }
+    fs::rename(tmp, fs::path(path), ec);
     if (ec) {
         fs::remove(tmp, ec);
         throw LumenError({}, "cannot rename the image to '" + path + "': " + ec.message());

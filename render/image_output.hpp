@@ -33,8 +33,9 @@ public:
     // Encodes pixels [left, right] x [top, bottom] (inclusive) of `image`.
     void encode(const Image& image, int left, int top, int right, int bottom);
     // Writes every encoded pixel to `path` (through a temporary file renamed at the end, so a
-    // failed run never leaves a partial image), or finishes the file stream_to began. Throws
-    // LumenError on failure. A stream never finished is abandoned and its file removed.
+    // failed run never leaves a partial image), or finishes the file stream_to began (then
+    // `path` is the one given there). Throws LumenError on failure. A stream never finished
+    // is abandoned and its file removed.
     void write(const std::string& path);
 
 private:

@@ -33,13 +33,21 @@ private:
     Listing when_;
 };
 
+scene::TexturePtr texture_of(scene::PigmentPtr pigment) {
+    auto texture = std::make_shared<scene::Texture>();
+    texture->pigment = std::move(pigment);
+    return texture;
+}
+
+scene::TexturePtr plain(scene::Colour c) {
+    auto pigment = std::make_shared<scene::Pigment>();
+    pigment->colour = c;
+    return texture_of(pigment);
+}
+
 scene::LayeredTexture filtering(std::mt19937& rng) {
     std::uniform_real_distribution<double> u(0.3, 1);
-    auto pigment = std::make_shared<scene::Pigment>();
-    pigment->colour = {u(rng), u(rng), u(rng), u(rng) * 0.8, u(rng) * 0.2};
-    auto texture = std::make_shared<scene::Texture>();
-    texture->pigment = pigment;
-    return {texture};
+    return {plain({u(rng), u(rng), u(rng), u(rng) * 0.8, u(rng) * 0.2})};
 }
 
 std::shared_ptr<scene::Object> glassy(scene::Shape shape, std::mt19937& rng) {
@@ -128,14 +136,6 @@ TEST(ShadowFilter, SceneWithCsgStepsFromSurfaceToSurface) {
               1);
 }
 
-scene::TexturePtr plain(scene::Colour c) {
-    auto pigment = std::make_shared<scene::Pigment>();
-    pigment->colour = c;
-    auto texture = std::make_shared<scene::Texture>();
-    texture->pigment = pigment;
-    return texture;
-}
-
 TEST(ShadowFilter, WhichTexturesMayPassLight) {
     const scene::Colour opaque{0.5, 0.5, 0.5, 0, 0}, glass{1, 1, 1, 0.9, 0};
     const scene::LayeredTexture solid{plain(opaque)}, clear{plain(glass)};
@@ -149,16 +149,12 @@ TEST(ShadowFilter, WhichTexturesMayPassLight) {
     auto mapped = std::make_shared<scene::Pigment>();
     mapped->pattern.type = scene::PatternType::Gradient;
     mapped->colour_map = {{0, opaque}, {1, {0, 0, 0, 0, 0.5}}};
-    auto texture = std::make_shared<scene::Texture>();
-    texture->pigment = mapped;
-    const scene::LayeredTexture gradient{texture};
+    const scene::LayeredTexture gradient{texture_of(mapped)};
     EXPECT_TRUE(may_pass_light(&gradient));
     auto nested = std::make_shared<scene::Pigment>();
     nested->pattern.type = scene::PatternType::Checker;
     nested->pigment_map = {{0, std::make_shared<scene::Pigment>()}, {1, mapped}};
-    auto nested_texture = std::make_shared<scene::Texture>();
-    nested_texture->pigment = nested;
-    const scene::LayeredTexture checker{nested_texture};
+    const scene::LayeredTexture checker{texture_of(nested)};
     EXPECT_TRUE(may_pass_light(&checker));
     // texture_map entries are resolved through one of their layers: any may count.
     auto map_texture = std::make_shared<scene::Texture>();
