@@ -51,12 +51,11 @@ std::vector<Block> make_blocks(int x0, int y0, int x1, int y1, int size) {
     return blocks;
 }
 
-}  // namespace
-
-namespace {
-
 struct Area {
     int x0, y0, x1, y1;  // inclusive
+    bool whole(const RenderOptions& o) const {
+        return x0 == 0 && y0 == 0 && x1 == o.width - 1 && y1 == o.height - 1;
+    }
 };
 
 Area render_area(const RenderOptions& options) {
@@ -68,10 +67,7 @@ Area render_area(const RenderOptions& options) {
 
 }  // namespace
 
-bool covers_whole_image(const RenderOptions& options) {
-    const Area a = render_area(options);
-    return a.x0 == 0 && a.y0 == 0 && a.x1 == options.width - 1 && a.y1 == options.height - 1;
-}
+bool covers_whole_image(const RenderOptions& options) { return render_area(options).whole(options); }
 
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats,
              const Progress& progress, const BlockDone& block_done) {
@@ -104,10 +100,11 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
     Image image;
     image.width = options.width;
     image.height = options.height;
-    const auto [x0, y0, x1, y1] = render_area(options);
+    const Area area = render_area(options);
+    const auto [x0, y0, x1, y1] = area;
     // The blocks write every pixel of the render area, so only a partial render needs zeroes
     // (zeroing 9.6 MB at 800x600 first took its page faults on one thread).
-    if (covers_whole_image(options))
+    if (area.whole(options))
         image.pixels.resize(size_t(image.width) * image.height * 5);
     else
         image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);

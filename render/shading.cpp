@@ -111,14 +111,16 @@ double highlight_power(double c, double e) {
 glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm::dvec3& ldir,
                       double cos_light) {
     glm::dvec3 out(0);
+    auto add = [&](double k) {
+        if (k > 0)
+            out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
+                                  : glm::dvec3(k);
+    };
     if (f.phong > 0) {
         const glm::dvec3 rv = s.view - 2 * glm::dot(s.view, s.normal) * s.normal;
         const double c = glm::dot(rv, ldir);
         if (c > 0 && !(f.phong_size >= 60 && c <= 0.0008)) {
-            const double k = f.phong * highlight_power(c, f.phong_size);
-            if (k > 0)
-                out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
-                                      : glm::dvec3(k);
+            add(f.phong * highlight_power(c, f.phong_size));
         }
     }
     if (f.specular > 0) {
@@ -126,10 +128,7 @@ glm::dvec3 highlights(const SurfaceSample& s, const scene::Finish& f, const glm:
         const double len = glm::length(h);
         const double c = len > 0 ? glm::dot(h, s.normal) / len : 0;
         if (c > 0) {
-            const double k = f.specular * highlight_power(c, 1.0 / f.roughness);
-            if (k > 0)
-                out += f.metallic > 0 ? k * metallic_factor(f.metallic, cos_light, s.colour)
-                                      : glm::dvec3(k);
+            add(f.specular * highlight_power(c, 1.0 / f.roughness));
         }
     }
     return out;
