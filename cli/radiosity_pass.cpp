@@ -16,18 +16,6 @@ namespace rad = render::radiosity;
 
 namespace {
 
-class GeometryIntersector final : public render::Intersector {
-public:
-    explicit GeometryIntersector(const render::Geometry& g) : g_(g) {}
-    bool intersect(const render::Ray& ray, double t_min, double t_max, render::Hit& hit,
-                   bool shadow) const override {
-        return g_.intersect(ray, t_min, t_max, hit, shadow);
-    }
-
-private:
-    const render::Geometry& g_;
-};
-
 std::string seconds(double s) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.2f s", s);
@@ -62,7 +50,6 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
     geometry_ = std::make_unique<render::Geometry>(scene);
-    intersector_ = std::make_unique<GeometryIntersector>(*geometry_);
     mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(scene, options.patch_size));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
 
@@ -77,7 +64,7 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         reused_ = true;  // only the camera changed: the solution is view-independent
     } else {
         info_ = {};
-        solution_ = rad::solve_scene(scene, *mesh_, *intersector_, options, threads, info_);
+        solution_ = rad::solve_scene(scene, *mesh_, *geometry_, options, threads, info_);
         solution_->scene_key = key;
         for (const std::string& w : info_.warnings) log.push_back(w);
         if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
@@ -91,15 +78,15 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         const auto t0 = std::chrono::steady_clock::now();
         const render::CameraModel camera(scene.camera, render.width, render.height);
         const std::vector<char> seen =
-            rad::visible_sides(*mesh_, *intersector_, camera, render.width, render.height);
+            rad::visible_sides(*mesh_, *geometry_, camera, render.width, render.height);
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
         receivers_ = std::make_unique<rad::ReceiverMesh>(
-            rad::receive(scene, *mesh_, *intersector_, solution_->B, seen, ds.gather_rays,
+            rad::receive(scene, *mesh_, *geometry_, solution_->B, seen, ds.gather_rays,
                          threads, solution_->G, options.subdivision));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         display_ = rad::make_preview(*mesh_, *receivers_, ds);
     } else {
-        display_ = rad::make_gather(scene, *mesh_, *solution_, *intersector_, ds);
+        display_ = rad::make_gather(scene, *mesh_, *solution_, *geometry_, ds);
     }
     return display_.get();
 }

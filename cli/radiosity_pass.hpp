@@ -46,7 +46,6 @@ public:
 
 private:
     std::unique_ptr<render::Geometry> geometry_;
-    std::unique_ptr<render::Intersector> intersector_;
     std::unique_ptr<render::radiosity::SceneMesh> mesh_;
     std::optional<render::radiosity::Solution> solution_;
     std::unique_ptr<render::radiosity::ReceiverMesh> receivers_;  // G shown in this view

@@ -13,6 +13,7 @@
 
 #include "render/bvh.hpp"
 #include "render/node.hpp"
+#include "render/shadows.hpp"
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -33,33 +34,61 @@ constexpr size_t kDirectRoots = 8;
 // the node walk and variant dispatch cost more than the sphere test itself.
 struct Root {
     enum class Kind : uint8_t { Node, Sphere, Plane, Box };
+    static constexpr uint8_t kNoShadow = 1, kClear = 2;  // `hidden` bits
     Kind kind = Kind::Node;
-    bool no_shadow = false;
+    uint8_t hidden = 0;  // the queries that skip it: see hidden_bits()
     uint32_t node = 0;
     double min_depth = kDepthDefault;
     const void* shape = nullptr;  // the SphereShape, PlaneShape or BoxShape in the store
 };
 
-Root make_root(const NodeStore& store, uint32_t index) {
+// The Root::hidden bits a query skips.
+uint8_t hidden_bits(Query query) {
+    switch (query) {
+    case Query::All: return 0;
+    case Query::Shadow: return Root::kNoShadow;
+    case Query::ShadowSkipClear: return Root::kNoShadow | Root::kClear;
+    }
+    return 0;
+}
+
+// Every surface under node `index` lets light through unchanged (Intersector's clear objects).
+bool clear_node(const NodeStore& store, uint32_t index) {
+    const Node& n = store.nodes[index];
+    if (n.kind == NodeKind::Shape) {
+        // Mesh triangles may carry textures of their own.
+        if (std::holds_alternative<std::unique_ptr<MeshShape>>(store.shapes[n.shape])) return false;
+        return passes_all_light(n.texture) &&
+               (!n.interior_texture || passes_all_light(n.interior_texture)) &&
+               clear_for_shadows(n.interior);
+    }
+    for (uint32_t i = 0; i < n.child_count; ++i)
+        if (!clear_node(store, store.links[n.children + i])) return false;
+    return true;
+}
+
+// A bounded root's kind and flags (unbounded ones are never skipped as clear: no box can say
+// where their surfaces are).
+Root make_root(const NodeStore& store, uint32_t index, bool bounded) {
     Root r;
     r.node = index;
     const Node& n = store.nodes[index];
+    r.hidden = (n.no_shadow ? Root::kNoShadow : 0) |
+               (bounded && clear_node(store, index) ? Root::kClear : 0);
     if (n.kind != NodeKind::Shape || !n.identity || n.clip_count || n.bound_count) return r;
     const ShapeData& d = store.shapes[n.shape];
     if (auto* s = std::get_if<SphereShape>(&d)) r.kind = Root::Kind::Sphere, r.shape = s;
     else if (auto* s = std::get_if<PlaneShape>(&d)) r.kind = Root::Kind::Plane, r.shape = s;
     else if (auto* s = std::get_if<BoxShape>(&d)) r.kind = Root::Kind::Box, r.shape = s;
-    r.no_shadow = n.no_shadow;
     r.min_depth = n.min_depth;
     return r;
 }
 
 // Same answer as intersect_node(store, r.node, ...) (its primitive path, for direct kinds).
-// `local` is the world ray itself, made once per query.
+// `local` is the world ray itself, made once per query; callers have skipped hidden roots.
 bool intersect_root(const NodeStore& store, const Root& r, const Ray& ray, const LocalRay& local,
                     double tmin, double tmax, bool shadow, NodeHit& hit) {
     if (r.kind == Root::Kind::Node) return intersect_node(store, r.node, ray, tmin, tmax, shadow, hit);
-    if (shadow && r.no_shadow) return false;
     const double from = std::max(tmin, r.min_depth);
     hit.leaf = r.node;
     if (r.kind == Root::Kind::Sphere)
@@ -94,36 +123,82 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
 }  // namespace
 
 struct Geometry::Impl {
+    static constexpr int kQueries = 3;  // per Query value
     NodeStore store;
     std::vector<Root> bounded;        // roots in BVH order
     std::vector<Root> unbounded;      // roots tested by every ray
     std::vector<Aabb> bounded_boxes;  // bounded[i]'s box (small scenes skip the BVH walk)
-    Aabb all_bounded;                 // around all of bounded_boxes
+    Aabb seen_bounded[kQueries];      // around the bounded roots each query sees
     Bvh bvh;
     size_t primitives = 0;
-    bool listable = true;  // every root is a direct kind: visit_shadow_hits works
-    bool mostly_passes_light = false;
+    bool listable[kQueries] = {};  // every root seen is a direct kind: visit_shadow_hits works
+    bool mostly_passes_light[kQueries] = {};
+    // Boxes of the clear roots that shadow rays see, grown by twice the shadow tolerance, in
+    // the order of clear_bvh.
+    std::vector<Aabb> clear_boxes;
+    Bvh clear_bvh;
 
-    // Calls visit(root) for every unbounded root and every bounded one whose box the ray may
-    // meet within [t_min, limit]; `limit` may shrink as visit finds hits.
+    // Calls visit(root) for every root `query` sees that is unbounded or whose box the ray
+    // may meet within [t_min, limit]; `limit` may shrink as visit finds hits.
     template <class Visit>
-    void for_each_candidate(const Ray& ray, double t_min, const double& limit, Visit&& visit) const {
-        for (const Root& r : unbounded) visit(r);
+    void for_each_candidate(const Ray& ray, double t_min, const double& limit, Query query,
+                            Visit&& visit) const {
+        const uint8_t hide = hidden_bits(query);
+        for (const Root& r : unbounded)
+            if (!(r.hidden & hide)) visit(r);
         const SlabRay slab(ray.origin, ray.dir);
         const size_t n = bounded.size();
         if (n <= kDirectRoots) {
             // A handful of objects: past the box around them all (one test culls most shadow
             // rays), their own boxes cull as well as the BVH's inner nodes would.
-            if (n && slab.hits(all_bounded, t_min, limit))
+            if (n && slab.hits(seen_bounded[int(query)], t_min, limit))
                 for (size_t i = 0; i < n; ++i)
-                    if (slab.hits(bounded_boxes[i], t_min, limit)) visit(bounded[i]);
+                    if (!(bounded[i].hidden & hide) && slab.hits(bounded_boxes[i], t_min, limit))
+                        visit(bounded[i]);
         } else {
             double prune = limit;
             bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
+                if (bounded[i].hidden & hide) return;
                 visit(bounded[i]);
                 prune = limit;
             });
         }
+    }
+
+    // Per query: the box around the bounded roots it sees, whether they can all be listed,
+    // and whether at least half of them may let light through.
+    void summarise_queries() {
+        for (Query q : {Query::All, Query::Shadow, Query::ShadowSkipClear}) {
+            const int k = int(q);
+            const uint8_t hide = hidden_bits(q);
+            size_t seen = 0, passing_light = 0;
+            listable[k] = true;
+            for (const auto* list : {&bounded, &unbounded})
+                for (const Root& r : *list) {
+                    if (r.hidden & hide) continue;
+                    ++seen;
+                    listable[k] = listable[k] && r.kind != Root::Kind::Node;
+                    const Node& n = store.nodes[r.node];
+                    passing_light += may_pass_light(n.texture) || may_pass_light(n.interior_texture);
+                }
+            mostly_passes_light[k] = 2 * passing_light >= seen;
+            for (size_t i = 0; i < bounded.size(); ++i)
+                if (!(bounded[i].hidden & hide)) seen_bounded[k].expand(bounded_boxes[i]);
+        }
+    }
+
+    void index_clear_roots() {
+        std::vector<Aabb> boxes;
+        for (size_t i = 0; i < bounded.size(); ++i)
+            if (bounded[i].hidden == Root::kClear) {
+                Aabb b = bounded_boxes[i];
+                b.lo -= 2 * kShadowTolerance;
+                b.hi += 2 * kShadowTolerance;
+                boxes.push_back(b);
+            }
+        if (boxes.empty()) return;
+        clear_bvh.build(boxes);
+        for (uint32_t i : clear_bvh.order()) clear_boxes.push_back(boxes[i]);
     }
 };
 
@@ -142,32 +217,25 @@ Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) 
             boxes.push_back(box);
             finite.push_back(r);
         } else {
-            impl_->unbounded.push_back(make_root(store, r));
+            impl_->unbounded.push_back(make_root(store, r, false));
         }
     }
     impl_->bvh.build(boxes, 2);
-    for (uint32_t i : impl_->bvh.order()) impl_->bounded.push_back(make_root(store, finite[i]));
-    size_t roots_passing_light = 0;
-    for (const auto* list : {&impl_->bounded, &impl_->unbounded})
-        for (const Root& r : *list) {
-            impl_->listable = impl_->listable && r.kind != Root::Kind::Node;
-            const Node& n = store.nodes[r.node];
-            roots_passing_light += may_pass_light(n.texture) || may_pass_light(n.interior_texture);
-        }
-    impl_->mostly_passes_light =
-        2 * roots_passing_light >= impl_->bounded.size() + impl_->unbounded.size();
-    for (const Root& r : impl_->bounded) {
-        impl_->bounded_boxes.push_back(store.nodes[r.node].surface);
-        impl_->all_bounded.expand(store.nodes[r.node].surface);
+    for (uint32_t i : impl_->bvh.order()) {
+        impl_->bounded.push_back(make_root(store, finite[i], true));
+        impl_->bounded_boxes.push_back(boxes[i]);
     }
+    impl_->summarise_queries();
+    impl_->index_clear_roots();
 }
 
 Geometry::~Geometry() = default;
 
 size_t Geometry::primitive_count() const { return impl_->primitives; }
 
-bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow) const {
+bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Query query) const {
     const NodeStore& store = impl_->store;
+    const bool shadow = query != Query::All;
     NodeHit best;
     bool found = false;
     double best_t = t_max;
@@ -188,19 +256,34 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, b
             limit = next_up(best_t);
         }
     };
-    impl_->for_each_candidate(ray, t_min, limit, test);
+    impl_->for_each_candidate(ray, t_min, limit, query, test);
     if (!found) return false;
 
     resolve_hit(store, ray, best_t, best, hit);
     return true;
 }
 
-bool Geometry::lists_shadow_hits() const { return impl_->listable; }
-bool Geometry::mostly_passes_light() const { return impl_->mostly_passes_light; }
+Intersector::Listing Geometry::shadow_listing(Query query) const {
+    if (!impl_->listable[int(query)]) return Listing::Never;
+    return impl_->mostly_passes_light[int(query)] ? Listing::FromStart : Listing::AfterFirstSurface;
+}
 
-int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
-                                void* context) const {
-    if (!impl_->listable) return -1;
+bool Geometry::has_clear_objects() const { return !impl_->clear_boxes.empty(); }
+
+bool Geometry::near_clear_object(const glm::dvec3& p) const {
+    // A point query: the slab test of a ray from p over [0, 0] passes exactly the boxes
+    // holding p.
+    bool near = false;
+    double reach = 0;
+    impl_->clear_bvh.traverse(SlabRay(p, glm::dvec3(1)), 0, reach, [&](uint32_t i) {
+        if (impl_->clear_boxes[i].contains(p)) near = true, reach = -1;
+    });
+    return near;
+}
+
+int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, Query query,
+                                HitVisitor visit, void* context) const {
+    if (!impl_->listable[int(query)]) return -1;
     const NodeStore& store = impl_->store;
     struct Found {  // no default member values: the array is not cleared on every call
         double t;
@@ -224,7 +307,7 @@ int Geometry::visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitV
             else found[n++] = {h.shape.t, r.node, h.shape.normal, h.shape.uv, h.shape.texture};
         }
     };
-    impl_->for_each_candidate(ray, t_min, t_max, collect);
+    impl_->for_each_candidate(ray, t_min, t_max, query, collect);
     if (overflow) return -1;
     // Nearest first; at equal t the earlier object in scene order, as intersect() decides.
     int order[kMaxListedHits];

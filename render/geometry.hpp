@@ -2,39 +2,41 @@
 #pragma once
 #include <memory>
 
-#include "render/hit.hpp"
-#include "render/ray.hpp"
+#include "render/intersector.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::render {
 
-class Geometry {
+class Geometry final : public Intersector {
 public:
     // Builds the acceleration structure. Throws LumenError (with the object's location) for a
     // shape the renderer cannot intersect.
     explicit Geometry(const scene::Scene& scene);
-    ~Geometry();
+    ~Geometry() override;
     Geometry(const Geometry&) = delete;
     Geometry& operator=(const Geometry&) = delete;
 
     // Nearest hit with t_min < t < t_max (POV ignores hits closer than 1e-4 for every ray:
-    // callers pass that as t_min). With `shadow` set, objects flagged no_shadow are skipped;
-    // otherwise objects flagged no_image are still hit (the tracer decides per ray kind).
-    // Thread-safe (const, no shared mutable state).
-    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit, bool shadow = false) const;
+    // callers pass that as t_min) among the objects `query` sees; Query::All still hits
+    // objects flagged no_image (the tracer decides per ray kind).
+    // Thread-safe (const, no shared mutable state), as is everything below.
+    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit,
+                   Query query = Query::All) const override;
 
     // Every surface a shadow ray crosses with t_min < t < t_max, nearest first (equal t: scene
     // order), handed to `visit` until it returns false. Returns how many were handed over, or
-    // -1, before any, where the scene cannot list them in one pass: objects other than plain
-    // spheres, planes and boxes (CSG, transformed, clipped or bounded ones), or more than
-    // kMaxListedHits hits. Callers then step from hit to hit with intersect().
+    // -1, before any, where the scene cannot list them in one pass: objects `query` sees other
+    // than plain spheres, planes and boxes (CSG, transformed, clipped or bounded ones), or
+    // more than kMaxListedHits hits. Callers then step from hit to hit with intersect().
     static constexpr int kMaxListedHits = 32;
-    bool lists_shadow_hits() const;
-    // At least half the objects may let light through (filter or transmit somewhere).
-    bool mostly_passes_light() const;
-    using HitVisitor = bool (*)(void* context, const Hit& hit);
-    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
-                          void* context) const;
+    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, Query query,
+                          HitVisitor visit, void* context) const override;
+    // Never where the objects `query` sees cannot be listed; from the start where at least
+    // half of them may let light through (filter or transmit somewhere).
+    Listing shadow_listing(Query query) const override;
+
+    bool has_clear_objects() const override;
+    bool near_clear_object(const glm::dvec3& p) const override;
 
     // True if world point p is inside `object` (used for media/fog decisions and tests).
     static bool inside(const scene::Object& object, const glm::dvec3& p);

@@ -46,7 +46,7 @@ inline Ray ray(glm::dvec3 origin, glm::dvec3 dir) { return {origin, glm::normali
 inline std::optional<Hit> trace(const Geometry& g, const Ray& r, bool shadow = false,
                                 double t_min = 1e-4) {
     Hit h;
-    if (!g.intersect(r, t_min, 1e30, h, shadow)) return std::nullopt;
+    if (!g.intersect(r, t_min, 1e30, h, shadow ? Query::Shadow : Query::All)) return std::nullopt;
     return h;
 }
 

@@ -18,26 +18,6 @@
 namespace lumen::render {
 namespace {
 
-class GeometryIntersector final : public Intersector {
-public:
-    explicit GeometryIntersector(const Geometry& g) : g_(g) {}
-    bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit,
-                   bool shadow) const override {
-        return g_.intersect(ray, t_min, t_max, hit, shadow);
-    }
-    Listing shadow_listing() const override {
-        if (!g_.lists_shadow_hits()) return Listing::Never;
-        return g_.mostly_passes_light() ? Listing::FromStart : Listing::AfterFirstSurface;
-    }
-    int visit_shadow_hits(const Ray& ray, double t_min, double t_max, HitVisitor visit,
-                          void* context) const override {
-        return g_.visit_shadow_hits(ray, t_min, t_max, visit, context);
-    }
-
-private:
-    const Geometry& g_;
-};
-
 struct Block {
     int left, top, right, bottom;
 };
@@ -87,12 +67,11 @@ Image render(const scene::Scene& scene, const RenderOptions& options, RenderStat
         with_looks_like->objects.push_back(l.looks_like);
     }
     const Geometry geometry(with_looks_like ? *with_looks_like : scene);
-    const GeometryIntersector intersector(geometry);
     TraceOptions trace_options;
     trace_options.quality = options.quality;
     trace_options.alpha = options.alpha;
     trace_options.indirect = options.indirect;
-    const Tracer tracer(scene, intersector, trace_options);
+    const Tracer tracer(scene, geometry, trace_options);
     const CameraModel camera(scene.camera, options.width, options.height);
     const BlockRenderer blocks_renderer(tracer, camera, options,
                                         colour_compare_for(scene, options.aa_gamma));

@@ -99,10 +99,10 @@ class TestIntersector final : public Intersector {
 public:
     explicit TestIntersector(const scene::Scene& s) : scene_(s) {}
     bool intersect(const Ray& ray, double t_min, double t_max, Hit& hit,
-                   bool shadow) const override {
+                   Query query) const override {
         bool found = false;
         for (const scene::ObjectPtr& o : scene_.objects) {
-            if (shadow && o->no_shadow) continue;
+            if (query != Query::All && o->no_shadow) continue;
             double t = 0;
             glm::dvec3 n;
             if (!nearest(*o, ray, std::max(t_min, 1e-6), t_max, t, n)) continue;

@@ -9,7 +9,6 @@
 namespace lumen::render {
 namespace {
 
-constexpr double kShadowTolerance = 1e-3;
 constexpr double kBlack = 1e-10;
 constexpr int kMaxShadowSurfaces = 256;  // bounds the loop on pathological scenes
 
@@ -17,9 +16,20 @@ bool is_black(const glm::dvec3& c) { return c.x < kBlack && c.y < kBlack && c.z 
 
 }  // namespace
 
+namespace {
+
+bool fades(const scene::Interior& in, bool shadow_ray) {
+    return !(std::fabs(in.fade_distance) <= 1e-10) && !(shadow_ray && in.fade_power <= 0);
+}
+
+}  // namespace
+
+bool clear_for_shadows(const scene::Interior* in) {
+    return !in || (in->caustics == 0 && !fades(*in, true));
+}
+
 glm::dvec3 interior_fade(const scene::Interior& in, double depth, bool shadow_ray) {
-    if (std::fabs(in.fade_distance) <= 1e-10) return glm::dvec3(1);
-    if (shadow_ray && in.fade_power <= 0) return glm::dvec3(1);
+    if (!fades(in, shadow_ray)) return glm::dvec3(1);
     const glm::dvec3 fc = in.fade_colour;
     if (in.fade_power >= 1000) return glm::exp(-(glm::dvec3(1) - fc) * (depth / in.fade_distance));
     return fc + (glm::dvec3(1) - fc) / (1 + std::pow(depth / in.fade_distance, in.fade_power));
@@ -30,12 +40,15 @@ namespace {
 // The light left after the surfaces a shadow ray crosses, taken nearest first: POV's loop of
 // one nearest-hit query per surface, each from the last surface passed, ignoring surfaces
 // closer than the tolerance to it. Both ways of finding the surfaces (one query per surface,
-// or all of them listed at once) feed this, so they agree.
+// or all of them listed at once) feed this, so they agree. A walk that skips clear objects
+// gives up at a surface that may have one within the tolerance before it (POV would have
+// stepped over that surface).
 class ShadowWalk {
 public:
     ShadowWalk(const glm::dvec3& dir, double distance, const InteriorList& interiors,
-               TraceCounters& counters)
-        : dir_(dir), remaining_(distance), inside_(interiors), counters_(counters) {}
+               TraceCounters& counters, const Intersector* skipping_clear)
+        : dir_(dir), remaining_(distance), inside_(interiors), counters_(counters),
+          skipping_clear_(skipping_clear) {}
 
     // Starts the next query; false where POV's loop ends instead (the rest of the way is
     // within the tolerance, or the surface bound is reached). t_max: the query's reach.
@@ -48,6 +61,10 @@ public:
     }
     // The surface the query found, `depth` past the last one. False once no light is left.
     bool cross(const Hit& hit, double depth) {
+        if (skipping_clear_ && skipping_clear_->near_clear_object(hit.point)) {
+            gave_up_ = true;
+            return false;
+        }
         filter_ *= surface_filter(facing_texture(hit, dir_), hit.point);
         if (is_black(filter_)) {
             filter_ = glm::dvec3(0);
@@ -64,7 +81,9 @@ public:
         return true;
     }
     const glm::dvec3& filter() const { return filter_; }
+    const glm::dvec3& dir() const { return dir_; }
     int crossings() const { return crossings_; }
+    bool gave_up() const { return gave_up_; }
 
 private:
     glm::dvec3 dir_;
@@ -72,8 +91,10 @@ private:
     InteriorList inside_;
     TraceCounters& counters_;
     glm::dvec3 filter_{1};
+    const Intersector* skipping_clear_;
     int steps_ = 0;
     int crossings_ = 0;
+    bool gave_up_ = false;
 };
 
 // Feeds a listing of every surface, nearest first, to the walk: a surface is what the walk's
@@ -93,34 +114,47 @@ struct Listing {
     }
 };
 
-}  // namespace
-
-glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
-                         const glm::dvec3& dir, double distance, const InteriorList& interiors,
-                         TraceCounters& counters) {
-    ShadowWalk walk(dir, distance, interiors, counters);
-    Ray ray{point, dir};
+// Takes `walk` across the surfaces `query` sees from `point` towards the light.
+void step_through(const Intersector& geometry, Query query, const glm::dvec3& point,
+                  ShadowWalk& walk) {
+    Ray ray{point, walk.dir()};
     Hit hit;  // one for the whole loop: intersect() sets every field of a hit it reports
     double t_max;
     // Plain scenes can list the surfaces in one pass instead of one query per surface: from
     // the start where most objects let light through, else past a first surface that does
     // (most shadow rays end at their first surface, where one nearest-hit query is cheaper).
-    const Intersector::Listing when = geometry.shadow_listing();
+    const Intersector::Listing when = geometry.shadow_listing(query);
     bool list = when == Intersector::Listing::FromStart;
     while (walk.next_query(t_max)) {
         if (list) {
             list = false;
             Listing listing{walk, t_max};
-            if (geometry.visit_shadow_hits(ray, kShadowTolerance, t_max, &Listing::visit,
+            if (geometry.visit_shadow_hits(ray, kShadowTolerance, t_max, query, &Listing::visit,
                                            &listing) >= 0)
                 break;
         }
-        if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, true)) break;
+        if (!geometry.intersect(ray, kShadowTolerance, t_max, hit, query)) break;
         if (!walk.cross(hit, hit.t)) break;
         ray.origin = hit.point;
         list = when == Intersector::Listing::AfterFirstSurface && walk.crossings() == 1;
     }
-    return walk.filter();
+}
+
+}  // namespace
+
+glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
+                         const glm::dvec3& dir, double distance, const InteriorList& interiors,
+                         TraceCounters& counters) {
+    // Most shadow rays never come near a clear object's surface: skipping those objects spares
+    // their intersections and textures.
+    if (geometry.has_clear_objects()) {
+        ShadowWalk skipping(dir, distance, interiors, counters, &geometry);
+        step_through(geometry, Query::ShadowSkipClear, point, skipping);
+        if (!skipping.gave_up()) return skipping.filter();
+    }
+    ShadowWalk all(dir, distance, interiors, counters, nullptr);
+    step_through(geometry, Query::Shadow, point, all);
+    return all.filter();
 }
 
 }  // namespace lumen::render

@@ -12,6 +12,10 @@ namespace lumen::render {
 // fade_distance is set; shadow rays only when fade_power > 0 as well.
 glm::dvec3 interior_fade(const scene::Interior& interior, double depth, bool shadow_ray);
 
+// True when light crossing this interior on a shadow ray keeps its colour: no fade that
+// shadow rays apply and no fake caustics (null = the default interior).
+bool clear_for_shadows(const scene::Interior* interior);
+
 // The filter (per rgb channel, 1 = unshadowed) applied to light reaching `point` along unit
 // direction `dir` from a light `distance` away. The ray starts with a copy of the eye ray's
 // interior list and toggles it at every transparent surface, so a transparent solid filters

@@ -95,4 +95,17 @@ bool may_pass_light(const scene::LayeredTexture* layers) {
     return true;
 }
 
+bool passes_all_light(const scene::LayeredTexture* layers) {
+    if (!layers || layers->empty()) return false;
+    for (const scene::TexturePtr& t : *layers) {
+        if (!t || (t->pattern.type != scene::PatternType::Plain && !t->texture_map.empty()))
+            return false;
+        const scene::Pigment* p = t->pigment.get();
+        if (!p || p->pattern.type != scene::PatternType::Plain) return false;
+        const glm::dvec3 filter = layer_filter(p->colour);
+        if (filter != glm::dvec3(1)) return false;
+    }
+    return true;
+}
+
 }  // namespace lumen::render

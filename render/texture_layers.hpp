@@ -63,6 +63,10 @@ glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3&
 // or transmit); true when it may let light through somewhere.
 bool may_pass_light(const scene::LayeredTexture* layers);
 
+// True when surface_filter is exactly 1 at every point: every layer a solid colour whose
+// rgb·f + t is 1 in each channel (patterned layers are not looked into).
+bool passes_all_light(const scene::LayeredTexture* layers);
+
 // The filter colour of one layer: rgb·f + t per channel.
 inline glm::dvec3 layer_filter(const scene::Colour& c) {
     return glm::dvec3(c.r, c.g, c.b) * c.f + glm::dvec3(c.t);

@@ -98,7 +98,7 @@ RayColour Tracer::trace_primary(const Ray& ray, ThreadState& state) const {
 bool Tracer::find_hit(const Ray& ray, RayKind kind, Hit& hit) const {
     double t_min = kMinDepth;
     for (int i = 0; i < kMaxSkippedSurfaces; ++i) {
-        if (!geometry_.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
+        if (!geometry_.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, Query::All))
             return false;
         // Flags after CSG inheritance (a CSG's no_image hides all its children).
         const bool invisible = (kind == RayKind::Image && hit.no_image) ||

@@ -113,7 +113,7 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
             const Ray ray = camera.ray(x, y);
             Hit hit;
             if (!geometry.intersect(ray, kMinDepth, std::numeric_limits<double>::infinity(), hit,
-                                    false))
+                                    Query::All))
                 continue;
             glm::dvec3 bary;
             const long e = mesh.find(ray.origin, ray.dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);

@@ -19,7 +19,7 @@ inline constexpr double kMinDepth = 1e-4;  // as the tracer: nearer hits are ign
 inline bool radiosity_hit(const Intersector& geometry, const Ray& ray, Hit& hit) {
     double t_min = kMinDepth;
     for (int i = 0; i < 64; ++i) {
-        if (!geometry.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, false))
+        if (!geometry.intersect(ray, t_min, std::numeric_limits<double>::infinity(), hit, Query::All))
             return false;
         if (!hit.no_radiosity) return true;
         t_min = hit.t;
