@@ -44,12 +44,10 @@ struct Root {
 
 // The Root::hidden bits a query skips.
 uint8_t hidden_bits(Query query) {
-    switch (query) {
-    case Query::All: return 0;
-    case Query::Shadow: return Root::kNoShadow;
-    case Query::ShadowSkipClear: return Root::kNoShadow | Root::kClear;
-    }
-    return 0;
+    static constexpr uint8_t bits[] = {0, Root::kNoShadow, Root::kNoShadow | Root::kClear};
+    static_assert(int(Query::All) == 0 && int(Query::Shadow) == 1 &&
+                  int(Query::ShadowSkipClear) == 2);
+    return bits[int(query)];
 }
 
 // Every surface under node `index` lets light through unchanged (Intersector's clear objects).

