@@ -63,15 +63,20 @@ scene::LayeredTexture filtering(std::mt19937& rng) {
     return {plain({u(rng), u(rng), u(rng), u(rng) * 0.8, u(rng) * 0.2})};
 }
 
-std::shared_ptr<scene::Object> glassy(scene::Shape shape, std::mt19937& rng) {
+std::shared_ptr<scene::Object> with(scene::Shape shape, scene::LayeredTexture texture,
+                                    const scene::Interior& interior) {
     auto o = make(std::move(shape));
-    o->texture = filtering(rng);
+    o->texture = std::move(texture);
+    o->interior = interior;
+    return o;
+}
+
+std::shared_ptr<scene::Object> glassy(scene::Shape shape, std::mt19937& rng) {
     scene::Interior in;
     in.fade_distance = 2;
     in.fade_power = 1001;  // exponential fade: depends on the depth inside
     in.fade_colour = {0.5, 0.8, 0.9};
-    o->interior = in;
-    return o;
+    return with(std::move(shape), filtering(rng), in);
 }
 
 TEST(ShadowFilter, ListingEveryCrossingAgreesWithOneQueryPerSurface) {
@@ -117,12 +122,9 @@ TEST(ShadowFilter, ListingEveryCrossingAgreesWithOneQueryPerSurface) {
 
 // A glass that lets all light through (rgbf 1), with an interior that does not fade.
 std::shared_ptr<scene::Object> clear_glass(scene::Shape shape) {
-    auto o = make(std::move(shape));
-    o->texture = {plain({1, 1, 1, 1, 0})};
     scene::Interior in;
     in.ior = 1.5;
-    o->interior = in;
-    return o;
+    return with(std::move(shape), {plain({1, 1, 1, 1, 0})}, in);
 }
 
 TEST(ShadowFilter, SkippingClearObjectsAgreesWithSteppingThroughThem) {
