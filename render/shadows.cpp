@@ -14,10 +14,6 @@ constexpr int kMaxShadowSurfaces = 256;  // bounds the loop on pathological scen
 
 bool is_black(const glm::dvec3& c) { return c.x < kBlack && c.y < kBlack && c.z < kBlack; }
 
-}  // namespace
-
-namespace {
-
 bool fades(const scene::Interior& in, bool shadow_ray) {
     return !(std::fabs(in.fade_distance) <= 1e-10) && !(shadow_ray && in.fade_power <= 0);
 }
