@@ -6,7 +6,7 @@ JOBS ?= 2
 FUZZ_SECONDS ?= 600
 WERROR := $(if $(filter true,$(CI)),ON,OFF)
 
-.PHONY: all deps configure build render test fuzz tsan bench bench-radiosity clean
+.PHONY: all deps configure build render test corpus fuzz tsan bench bench-radiosity clean
 
 all: build
 
@@ -26,6 +26,14 @@ render: configure
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+# The corpus report: POV-Ray's 396 sample scenes rendered by lumen and POV-Ray at 160x120
+# (build/corpus/index.html, corpus.tsv; POV-Ray's images cached there). CORPUS_ARGS passes
+# options and scene-path filters to tools/corpus, e.g. CORPUS_ARGS="--jobs 1 radiosity/".
+corpus: configure
+	cmake --build $(BUILD) --target lumen differential -j$(JOBS)
+	tools/corpus --lumen $(BUILD)/lumen --compare $(BUILD)/tests/differential/differential \
+	    --out $(BUILD)/corpus --jobs $(JOBS) $(CORPUS_ARGS)
 
 fuzz: deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \

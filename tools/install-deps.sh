@@ -9,6 +9,7 @@ packages=(
     povray povray-includes povray-examples
     clang libclang-rt-14-dev
     bc  # bench/render_vs_povray.sh arithmetic
+    python3  # tools/corpus, tools/compare-builds
 )
 # Optional: `--bench` adds what the benchmark charts need (make bench-radiosity).
 if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox); fi

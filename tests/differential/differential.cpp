@@ -1,6 +1,7 @@
 // Differential test driver: renders one scene of scenes.txt with lumen and with POV-Ray, compares
 // them over 8-bit RGB and checks the scene's PSNR floor.
 //   differential --list scenes.txt --root REPO --out DIR --lumen LUMEN (--scene NAME | --all)
+//   differential --compare REFERENCE CANDIDATE HEAT_MAP   (one comparison, for tools/corpus)
 // Exit status: 0 pass, 1 fail, 77 when POV-Ray is not installed (ctest reports a skip).
 #include <sys/wait.h>
 
@@ -126,9 +127,22 @@ int run_scene(const SceneEntry& e, const fs::path& out, const std::string& lumen
     return r.passed ? 0 : 1;
 }
 
+// Prints "PSNR MAX_ERROR DIFFERING_FRACTION" of two images (PSNR "inf" when identical).
+int compare_only(const std::string& reference, const std::string& candidate, const std::string& heat) {
+    try {
+        const Comparison c = compare_images(reference, candidate, heat);
+        std::printf("%.4f %d %.6f\n", c.psnr, c.max_error, c.differing_fraction);
+        return 0;
+    } catch (const std::exception& ex) {
+        std::cerr << "differential: " << ex.what() << "\n";
+        return 2;
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc == 5 && std::string(argv[1]) == "--compare") return compare_only(argv[2], argv[3], argv[4]);
     std::map<std::string, std::string> args;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
