@@ -111,11 +111,14 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
     hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
     hit.interior_texture = leaf.interior_texture;
     hit.interior = leaf.interior;
-    hit.interior_id = leaf.object;
+    // POV-Ray tells insides apart by their interior: the children of a CSG that share its
+    // material are one inside (a ray passes from one into the next without leaving it).
+    hit.interior_id = leaf.interior ? static_cast<const void*>(leaf.interior) : leaf.object;
     hit.no_image = leaf.no_image;
     hit.no_reflection = leaf.no_reflection;
     hit.double_illuminate = leaf.double_illuminate;
     hit.no_radiosity = leaf.no_radiosity;
+    hit.hollow = leaf.hollow;
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ struct Hit {
     // (POV copies a CSG's flags to its children, so `union { ... no_image }` hides them all).
     // Use these rather than object->no_image and friends.
     bool no_image = false, no_reflection = false, double_illuminate = false,
-         no_radiosity = false;
+         no_radiosity = false, hollow = false;
 };
 
 }  // namespace lumen::render

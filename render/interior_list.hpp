@@ -11,6 +11,7 @@ public:
     struct Entry {
         const void* id;
         const scene::Interior* interior;
+        bool hollow;  // the owner is `hollow`: fog and media still act inside it
     };
 
     InteriorList() = default;
@@ -35,20 +36,26 @@ public:
         return -1;
     }
     // Deeper nesting than kCapacity is dropped: the ray then behaves as if outside.
-    void push(const void* id, const scene::Interior* interior) {
-        if (size_ < kCapacity) entries_[size_++] = {id, interior};
+    void push(const void* id, const scene::Interior* interior, bool hollow = false) {
+        if (size_ < kCapacity) entries_[size_++] = {id, interior, hollow};
+    }
+    // Inside an object that is not hollow: POV-Ray has no fog or media there.
+    bool in_solid() const {
+        for (int i = 0; i < size_; ++i)
+            if (!entries_[i].hollow) return true;
+        return false;
     }
     void remove_at(int i) {
         for (int k = i; k + 1 < size_; ++k) entries_[k] = entries_[k + 1];
         --size_;
     }
     // Enter the interior if outside it, leave it if inside (shadow rays, continued rays).
-    void toggle(const void* id, const scene::Interior* interior) {
+    void toggle(const void* id, const scene::Interior* interior, bool hollow) {
         const int i = find(id);
         if (i >= 0)
             remove_at(i);
         else
-            push(id, interior);
+            push(id, interior, hollow);
     }
 
 private:

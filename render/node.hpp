@@ -27,7 +27,7 @@ struct Node {
     bool flip = false;       // normal flipped: odd number of inverses from the root down
     bool no_shadow = false;  // own or inherited from a CSG ancestor
     bool no_image = false, no_reflection = false, double_illuminate = false,
-         no_radiosity = false;  // likewise (reported in Hit)
+         no_radiosity = false, hollow = false;  // likewise (reported in Hit)
     double min_depth = kDepthDefault;
     uint32_t xf = 0;         // NodeStore::transforms: object -> world (when !identity)
     Aabb surface;            // world box of the points a hit can be at
@@ -63,7 +63,7 @@ struct NodeContext {
     const scene::LayeredTexture* interior_texture = nullptr;
     const scene::Interior* interior = nullptr;
     bool no_shadow = false, no_image = false, no_reflection = false, double_illuminate = false,
-         no_radiosity = false;
+         no_radiosity = false, hollow = false;
     bool invert = false, flip = false;
     std::vector<uint32_t> clips;                // clip nodes pushed down from flattened unions
     std::vector<uint32_t> bounds;               // bounded_by nodes pushed down likewise

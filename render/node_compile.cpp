@@ -73,6 +73,7 @@ void inherit_flags(To& to, const NodeContext& ctx, const scene::Object& o) {
     to.no_reflection = ctx.no_reflection || o.no_reflection;
     to.double_illuminate = ctx.double_illuminate || o.double_illuminate;
     to.no_radiosity = ctx.no_radiosity || o.no_radiosity;
+    to.hollow = ctx.hollow || o.hollow;
 }
 
 void pass_flags(NodeContext& to, const Node& from) {
@@ -81,6 +82,7 @@ void pass_flags(NodeContext& to, const Node& from) {
     to.no_reflection = from.no_reflection;
     to.double_illuminate = from.double_illuminate;
     to.no_radiosity = from.no_radiosity;
+    to.hollow = from.hollow;
 }
 
 uint32_t append_links(NodeStore& store, const std::vector<uint32_t>& items) {

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/fog.hpp"
 #include "render/shadows.hpp"
 
 namespace lumen::render {
@@ -89,15 +90,31 @@ private:
     ThreadState& state_;
 };
 
-// The shadow filter of one light at the sample point. projected_through blocks light even for
-// shadowless lights (tested along the ray to the light's centre), as in POV.
+// Whether fog dims this light on its way to a surface: POV's `media_attenuation on`.
+bool fog_dims(const LightSource& l, const LightingEnv& env) {
+    return l.light && l.light->media_attenuation && l.light->media_interaction && env.fogs &&
+           !env.fogs->empty();
+}
+
+// The shadow filter of one light at the sample point, with the fog on the way where it dims
+// the light. projected_through blocks light even for shadowless lights (tested along the ray
+// to the light's centre), as in POV.
 glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightSample& ls,
                       const LightingEnv& env, const InteriorList& interiors, ThreadState& state) {
-    if (l.shadowless) return glm::dvec3(passes_projection(l, s.point, ls.dir, ls.distance));
-    if (l.area && env.quality >= 5)
-        return AreaShadow(l, s, ls, env, interiors, state).filter();
-    if (!passes_projection(l, s.point, ls.dir, ls.distance)) return glm::dvec3(0);
-    return shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors, state.counters);
+    glm::dvec3 filter;
+    double solid = 0;  // the way inside solid objects, where there is no fog
+    if (l.shadowless)
+        filter = glm::dvec3(passes_projection(l, s.point, ls.dir, ls.distance));
+    else if (l.area && env.quality >= 5)
+        filter = AreaShadow(l, s, ls, env, interiors, state).filter();
+    else if (!passes_projection(l, s.point, ls.dir, ls.distance))
+        return glm::dvec3(0);
+    else
+        filter = shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors,
+                               state.counters, fog_dims(l, env) ? &solid : nullptr);
+    if (fog_dims(l, env) && solid < ls.distance)
+        filter *= fog_along(*env.fogs, Ray{s.point, ls.dir}, ls.distance - solid).attenuation;
+    return filter;
 }
 
 // c^e for a highlight, 0 where it is below 1e-34: c^e <= exp(e (c - 1)) since log c <= c - 1,

@@ -9,6 +9,7 @@
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
 #include "render/trace_state.hpp"
+#include "scene/scene.hpp"
 #include "scene/texture.hpp"
 
 namespace lumen::render {
@@ -30,6 +31,7 @@ struct LightingEnv {
     const Intersector* geometry = nullptr;
     glm::dvec3 ambient_light{1};
     glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};  // global_settings irid_wavelength
+    const std::vector<scene::Fog>* fogs = nullptr;  // dims lights with media_attenuation
     bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient
     int quality = 9;
 };

@@ -71,12 +71,15 @@ public:
             filter_ *= 1 + std::pow(std::fabs(glm::dot(hit.normal, dir_)), 45 * hit.interior->caustics);
         const int where = inside_.find(hit.interior_id);
         if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
-        inside_.toggle(hit.interior_id, hit.interior);
+        if (inside_.in_solid()) solid_length_ += depth;
+        inside_.toggle(hit.interior_id, hit.interior, hit.hollow);
         remaining_ -= depth;
         ++crossings_;
         return true;
     }
     const glm::dvec3& filter() const { return filter_; }
+    // The way inside solid objects, including the rest of it to the light.
+    double solid_length() const { return solid_length_ + (inside_.in_solid() ? remaining_ : 0); }
     const glm::dvec3& dir() const { return dir_; }
     int crossings() const { return crossings_; }
     bool gave_up() const { return gave_up_; }
@@ -87,6 +90,7 @@ private:
     InteriorList inside_;
     TraceCounters& counters_;
     glm::dvec3 filter_{1};
+    double solid_length_ = 0;
     const Intersector* skipping_clear_;
     int steps_ = 0;
     int crossings_ = 0;
@@ -140,16 +144,17 @@ void step_through(const Intersector& geometry, Query query, const glm::dvec3& po
 
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
-                         TraceCounters& counters) {
+                         TraceCounters& counters, double* solid_length) {
     // Most shadow rays never come near a clear object's surface: skipping those objects spares
     // their intersections and textures.
-    if (geometry.has_clear_objects()) {
+    if (geometry.has_clear_objects() && !solid_length) {
         ShadowWalk skipping(dir, distance, interiors, counters, &geometry);
         step_through(geometry, Query::ShadowSkipClear, point, skipping);
         if (!skipping.gave_up()) return skipping.filter();
     }
     ShadowWalk all(dir, distance, interiors, counters, nullptr);
     step_through(geometry, Query::Shadow, point, all);
+    if (solid_length) *solid_length = all.solid_length();
     return all.filter();
 }
 

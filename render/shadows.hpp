@@ -19,9 +19,11 @@ bool clear_for_shadows(const scene::Interior* interior);
 // The filter (per rgb channel, 1 = unshadowed) applied to light reaching `point` along unit
 // direction `dir` from a light `distance` away. The ray starts with a copy of the eye ray's
 // interior list and toggles it at every transparent surface, so a transparent solid filters
-// once when entered and once when left.
+// once when entered and once when left. With `solid_length`, every object is walked (none
+// skipped as clear) and it receives how much of the way lies inside solid (non-hollow)
+// objects, where there is no fog.
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
-                         TraceCounters& counters);
+                         TraceCounters& counters, double* solid_length = nullptr);
 
 }  // namespace lumen::render

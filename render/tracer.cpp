@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "parser/diagnostics.hpp"
+#include "render/fog.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
@@ -35,7 +36,7 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
     const double ior = ior_of(hit.interior);
     const int at = after.find(hit.interior_id);
     if (after.empty()) {
-        after.push(hit.interior_id, hit.interior);
+        after.push(hit.interior_id, hit.interior, hit.hollow);
         return 1.0 / ior;
     }
     if (at == after.size() - 1) {
@@ -47,7 +48,7 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
         return 1.0;
     }
     const double eta = ior_of(after.last().interior) / ior;
-    after.push(hit.interior_id, hit.interior);
+    after.push(hit.interior_id, hit.interior, hit.hollow);
     return eta;
 }
 
@@ -79,6 +80,7 @@ Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const Tra
     env_.geometry = &geometry_;
     env_.ambient_light = scene.globals.ambient_light;
     env_.irid_wavelength = scene.globals.irid_wavelength;
+    env_.fogs = &scene.fogs;
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
@@ -294,52 +296,13 @@ RayColour Tracer::sky(const glm::dvec3& dir) const {
     return out;
 }
 
-namespace {
-
-// Fog density integrated along a ray segment of length `depth`: constant fog has density 1;
-// ground fog has density 1 below fog_offset and 1/(1 + ((y − offset)/alt)²) above it, y
-// measured along the fog's up vector. (The manual says 1/(1 + (y − offset)/alt)²; povray 3.7
-// renders match the form used here exactly.)
-double fog_width(const scene::Fog& fog, const Ray& ray, double depth) {
-    if (fog.type != 2) return depth;
-    const glm::dvec3 up = glm::length(fog.up) > 0 ? glm::normalize(fog.up) : glm::dvec3(0, 1, 0);
-    const double off = fog.offset, alt = fog.alt > 0 ? fog.alt : 1e-10;
-    auto density = [&](double y) {
-        if (y <= off) return 1.0;
-        const double u = (y - off) / alt;
-        return 1 / (1 + u * u);
-    };
-    auto integral = [&](double y) {  // antiderivative of the density
-        return y <= off ? y : off + alt * std::atan((y - off) / alt);
-    };
-    const double y1 = glm::dot(ray.origin, up);
-    const double dy = glm::dot(ray.dir, up);
-    if (std::fabs(dy) < 1e-10) return depth * density(y1);
-    return (integral(y1 + dy * depth) - integral(y1)) / dy;
-}
-
-}  // namespace
-
 void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
                        const InteriorList& interiors) const {
-    if (scene_.fogs.empty() || !interiors.empty()) return;
-    // Every fog attenuates what is behind it and adds its own colour; the added colours are
-    // summed without attenuating each other.
-    glm::dvec3 attenuation(1), added(0);
-    double transmit = 1;
-    for (const scene::Fog& fog : scene_.fogs) {
-        if (std::fabs(fog.distance) <= 1e-10) continue;  // a zero distance means no fog
-        const glm::dvec3 fc(fog.colour.r, fog.colour.g, fog.colour.b);
-        // The fog's transmit is the least amount of the scene that shows through.
-        const double k = std::max(std::exp(-fog_width(fog, ray, depth) / fog.distance), fog.colour.t);
-        // Filter tints the light that passes; it does not change the colour the fog adds.
-        const double f = fog.colour.f;
-        attenuation *= k * ((1 - f) + f * fc);
-        transmit *= k;
-        added += (1 - k) * fc;
-    }
-    c.rgb = added + attenuation * c.rgb;
-    c.transmit *= transmit;
+    // No fog while the ray is inside a solid (non-hollow) object.
+    if (scene_.fogs.empty() || interiors.in_solid()) return;
+    const FogEffect e = fog_along(scene_.fogs, ray, depth);
+    c.rgb = e.added + e.attenuation * c.rgb;
+    c.transmit *= e.transmit;
 }
 
 }  // namespace lumen::render
