@@ -43,13 +43,23 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
                                                     const rad::RadiosityOptions& options,
                                                     const render::RenderOptions& render,
                                                     std::vector<std::string>& log) {
+    display_.reset();
+    own_frame_ = std::make_unique<render::RenderFrame>(scene);
+    return prepare(*own_frame_, options, render, log);
+}
+
+const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& frame,
+                                                    const rad::RadiosityOptions& options,
+                                                    const render::RenderOptions& render,
+                                                    std::vector<std::string>& log) {
+    const scene::Scene& scene = frame.scene();
+    const render::Geometry& geometry = frame.geometry();
     const int threads = render.threads > 0 ? render.threads
                                            : int(std::max(1u, std::thread::hardware_concurrency()));
     display_.reset();
     receivers_.reset();
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
-    geometry_ = std::make_unique<render::Geometry>(scene);
     mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(scene, options.patch_size));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
 
@@ -64,7 +74,7 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         reused_ = true;  // only the camera changed: the solution is view-independent
     } else {
         info_ = {};
-        solution_ = rad::solve_scene(scene, *mesh_, *geometry_, options, threads, info_);
+        solution_ = rad::solve_scene(frame, *mesh_, options, threads, info_);
         solution_->scene_key = key;
         for (const std::string& w : info_.warnings) log.push_back(w);
         if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
@@ -78,15 +88,15 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
         const auto t0 = std::chrono::steady_clock::now();
         const render::CameraModel camera(scene.camera, render.width, render.height);
         const std::vector<char> seen =
-            rad::visible_sides(*mesh_, *geometry_, camera, render.width, render.height);
+            rad::visible_sides(*mesh_, geometry, camera, render.width, render.height);
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
         receivers_ = std::make_unique<rad::ReceiverMesh>(
-            rad::receive(scene, *mesh_, *geometry_, solution_->B, seen, ds.gather_rays,
+            rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays,
                          threads, solution_->G, options.subdivision));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         display_ = rad::make_preview(*mesh_, *receivers_, ds);
     } else {
-        display_ = rad::make_gather(scene, *mesh_, *solution_, *geometry_, ds);
+        display_ = rad::make_gather(scene, *mesh_, *solution_, geometry, ds);
     }
     return display_.get();
 }

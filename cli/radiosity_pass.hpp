@@ -6,7 +6,7 @@
 #include <memory>
 #include <optional>
 
-#include "render/geometry.hpp"
+#include "render/frame.hpp"
 #include "render/indirect_light.hpp"
 #include "render/radiosity/display.hpp"
 #include "render/radiosity/options.hpp"
@@ -26,9 +26,16 @@ uint64_t scene_key(const scene::Scene& scene);
 
 class RadiosityPass {
 public:
-    // Prepares the indirect light for `scene` (which must outlive the pass's use). Returns
-    // null when the scene has no radiosity. Reuses the previous solution when the scene key
-    // and mesh match. `log` receives warnings and the +V line.
+    // Prepares the indirect light for the frame, through its geometry and lights (the frame
+    // must outlive the pass's use of the result: the next prepare() drops it). Returns null
+    // when the scene has no radiosity. Reuses the previous solution when the scene key and
+    // mesh match. `log` receives warnings and the +V line.
+    const render::IndirectLight* prepare(const render::RenderFrame& frame,
+                                         const render::radiosity::RadiosityOptions& options,
+                                         const render::RenderOptions& render,
+                                         std::vector<std::string>& log);
+    // The same on a frame of its own for `scene` (which must outlive it), kept until the next
+    // prepare().
     const render::IndirectLight* prepare(const scene::Scene& scene,
                                          const render::radiosity::RadiosityOptions& options,
                                          const render::RenderOptions& render,
@@ -45,7 +52,7 @@ public:
     }
 
 private:
-    std::unique_ptr<render::Geometry> geometry_;
+    std::unique_ptr<render::RenderFrame> own_frame_;  // prepare(scene) only
     std::unique_ptr<render::radiosity::SceneMesh> mesh_;
     std::optional<render::radiosity::Solution> solution_;
     std::unique_ptr<render::radiosity::ReceiverMesh> receivers_;  // G shown in this view

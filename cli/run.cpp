@@ -17,6 +17,7 @@
 #include "interp/dump_scene.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/parser.hpp"
+#include "render/frame.hpp"
 #include "render/image_output.hpp"
 
 namespace lumen::cli {
@@ -47,7 +48,8 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     const auto start = Clock::now();
     render::RenderOptions options = effective_render_options(o);
     std::vector<std::string> log;
-    options.indirect = radiosity.prepare(scene, o.radiosity, options, log);
+    const render::RenderFrame compiled(scene);  // one compiled scene for every pass
+    options.indirect = radiosity.prepare(compiled, o.radiosity, options, log);
     for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
     ProgressBar bar(terminal, label);
     // Whole images are encoded block by block while they render: only the file write is left
@@ -61,7 +63,7 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
             encoder->encode(im, l, t, r, b);
         };
     }
-    const render::Image image = render::render(scene, options, &stats,
+    const render::Image image = render::render(compiled, options, &stats,
                                                [&](double f) { bar.update(f); }, encode_block);
     const double render_seconds = seconds_since(start);
     bar.finish();

@@ -203,10 +203,10 @@ struct Geometry::Impl {
     }
 };
 
-Geometry::Geometry(const scene::Scene& scene) : impl_(std::make_unique<Impl>()) {
+Geometry::Geometry(const std::vector<scene::ObjectPtr>& objects) : impl_(std::make_unique<Impl>()) {
     NodeStore& store = impl_->store;
     std::vector<uint32_t> roots;
-    for (const auto& object : scene.objects)
+    for (const auto& object : objects)
         if (object) compile_top_level(store, *object, roots);
     std::vector<Aabb> boxes;
     std::vector<uint32_t> finite;

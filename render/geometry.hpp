@@ -11,7 +11,9 @@ class Geometry final : public Intersector {
 public:
     // Builds the acceleration structure. Throws LumenError (with the object's location) for a
     // shape the renderer cannot intersect.
-    explicit Geometry(const scene::Scene& scene);
+    explicit Geometry(const std::vector<scene::ObjectPtr>& objects);
+    // The scene's objects (not the lights' looks_like objects: RenderFrame adds those).
+    explicit Geometry(const scene::Scene& scene) : Geometry(scene.objects) {}
     ~Geometry() override;
     Geometry(const Geometry&) = delete;
     Geometry& operator=(const Geometry&) = delete;

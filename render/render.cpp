@@ -5,14 +5,13 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
-#include <optional>
 #include <thread>
 #include <vector>
 
 #include "parser/diagnostics.hpp"
 #include "render/antialias.hpp"
 #include "render/camera.hpp"
-#include "render/geometry.hpp"
+#include "render/frame.hpp"
 #include "render/tracer.hpp"
 
 namespace lumen::render {
@@ -52,26 +51,24 @@ bool covers_whole_image(const RenderOptions& options) { return render_area(optio
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats,
              const Progress& progress, const BlockDone& block_done) {
     const auto started = std::chrono::steady_clock::now();
-    if (!scene.unsupported.empty()) {
-        const scene::Unsupported& u = scene.unsupported.front();
-        throw LumenError(u.loc, "unsupported feature: " + u.feature);
-    }
+    const RenderFrame frame(scene);
+    Image image = render(frame, options, stats, progress, block_done);
+    // The frame's compile time counts, as it did before frames.
+    if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return image;
+}
+
+Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats* stats,
+             const Progress& progress, const BlockDone& block_done) {
+    const auto started = std::chrono::steady_clock::now();
+    const scene::Scene& scene = frame.scene();
     if (options.width <= 0 || options.height <= 0)
         throw LumenError({}, "image size must be positive");
-
-    // A light's looks_like object is part of the geometry (already placed and no_shadow).
-    std::optional<scene::Scene> with_looks_like;
-    for (const scene::Light& l : scene.lights) {
-        if (!l.looks_like) continue;
-        if (!with_looks_like) with_looks_like = scene;
-        with_looks_like->objects.push_back(l.looks_like);
-    }
-    const Geometry geometry(with_looks_like ? *with_looks_like : scene);
     TraceOptions trace_options;
     trace_options.quality = options.quality;
     trace_options.alpha = options.alpha;
     trace_options.indirect = options.indirect;
-    const Tracer tracer(scene, geometry, trace_options);
+    const Tracer tracer(frame, trace_options);
     const CameraModel camera(scene.camera, options.width, options.height);
     const BlockRenderer blocks_renderer(tracer, camera, options,
                                         colour_compare_for(scene, options.aa_gamma));

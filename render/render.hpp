@@ -55,8 +55,14 @@ using BlockDone = std::function<void(const Image&, int left, int top, int right,
 // False for a partial render (+SR +ER +SC +EC that leave out part of the image).
 bool covers_whole_image(const RenderOptions& options);
 
-// Renders the scene. Throws LumenError if the scene uses something the renderer cannot draw
-// (with the location of the offending item).
+class RenderFrame;  // render/frame.hpp
+
+// Renders the frame's scene (its pre-passes, such as options.indirect, done on the same frame).
+Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats* stats = nullptr,
+             const Progress& progress = {}, const BlockDone& block_done = {});
+
+// The same on a frame built for this render. Throws LumenError if the scene uses something
+// the renderer cannot draw (with the location of the offending item).
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats = nullptr,
              const Progress& progress = {}, const BlockDone& block_done = {});
 

@@ -8,6 +8,7 @@
 
 #include "parser/diagnostics.hpp"
 #include "render/fog.hpp"
+#include "render/frame.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
@@ -69,14 +70,22 @@ struct Tracer::Context {
     bool continued = false;  // passes through an ior-1 surface without using a trace level
 };
 
+Tracer::Tracer(const RenderFrame& frame, const TraceOptions& options)
+    : scene_(frame.scene()), geometry_(frame.geometry()), options_(options) {
+    init(frame.lights());
+}
+
 Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options)
-    : scene_(scene), geometry_(geometry), options_(options) {
-    if (!scene.unsupported.empty()) {
-        const scene::Unsupported& u = scene.unsupported.front();
-        throw LumenError(u.loc, "unsupported feature: " + u.feature);
-    }
-    lights_ = prepare_lights(scene.lights);
-    env_.lights = &lights_;
+    : scene_(scene), geometry_(geometry), options_(options),
+      own_lights_(prepare_lights(scene.lights)) {
+    check_supported(scene);
+    init(own_lights_);
+}
+
+void Tracer::init(const std::vector<LightSource>& lights) {
+    const scene::Scene& scene = scene_;
+    const TraceOptions& options = options_;
+    env_.lights = &lights;
     env_.geometry = &geometry_;
     env_.ambient_light = scene.globals.ambient_light;
     env_.irid_wavelength = scene.globals.irid_wavelength;

@@ -25,10 +25,14 @@ struct TraceOptions {
     const IndirectLight* indirect = nullptr;  // radiosity; null: none
 };
 
+class RenderFrame;
+
 class Tracer {
 public:
-    // `scene` and `geometry` must outlive the tracer. Throws LumenError if the scene holds
-    // anything unsupported.
+    // Traces the frame's scene through its geometry and lights (the frame must outlive it).
+    Tracer(const RenderFrame& frame, const TraceOptions& options);
+    // The same over another intersector (tests); prepares the scene's lights itself. `scene`
+    // and `geometry` must outlive the tracer.
     Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options);
 
     // Colour seen along a camera ray.
@@ -38,6 +42,7 @@ private:
     enum class RayKind { Image, Reflection, Other };
     struct Context;  // one ray's level, weight, interiors and kind
 
+    void init(const std::vector<LightSource>& lights);  // the settings both constructors share
     RayColour trace(const Ray& ray, const Context& ctx, ThreadState& state, double* depth) const;
     RayColour shade(const Ray& ray, const Hit& hit, const Context& ctx, ThreadState& state) const;
     RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
@@ -49,7 +54,7 @@ private:
     const scene::Scene& scene_;
     const Intersector& geometry_;
     TraceOptions options_;
-    std::vector<LightSource> lights_;
+    std::vector<LightSource> own_lights_;  // prepared here when no frame holds them
     LightingEnv env_;
     int max_level_;
     double adc_bailout_;

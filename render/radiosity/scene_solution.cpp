@@ -75,9 +75,9 @@ int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options
     return std::clamp(rl, 1, 20);
 }
 
-std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh& mesh,
-                                     const Intersector& geometry, int threads) {
-    const std::vector<LightSource> lights = prepare_lights(scene.lights);
+std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads) {
+    const Intersector& geometry = frame.geometry();
+    const std::vector<LightSource>& lights = frame.lights();
     std::vector<glm::dvec3> H(mesh.unknowns(), glm::dvec3(0));
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
         TraceCounters counters;
@@ -194,11 +194,13 @@ void check_reflectance(const SceneMesh& mesh, std::vector<std::string>& warnings
 
 }  // namespace
 
-Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
-                     const Intersector& geometry, const RadiosityOptions& options, int threads,
+Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
+                     const RadiosityOptions& options, int threads,
                      SolveInfo& info) {
     auto t0 = std::chrono::steady_clock::now();
-    const std::vector<glm::dvec3> H = direct_light(scene, mesh, geometry, threads);
+    const scene::Scene& scene = frame.scene();
+    const Intersector& geometry = frame.geometry();
+    const std::vector<glm::dvec3> H = direct_light(frame, mesh, threads);
     const VertexFormFactors F = vertex_form_factors(scene, mesh, geometry, options, threads);
     info.form_factor_seconds = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();

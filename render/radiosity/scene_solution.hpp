@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "render/camera.hpp"
+#include "render/frame.hpp"
 #include "render/intersector.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
@@ -50,9 +51,8 @@ struct SolveInfo {
 // What radiosity gathers see in an escaping direction: the sky_sphere over the background.
 glm::dvec3 background_radiance(const scene::Scene& scene, const glm::dvec3& dir);
 
-// Direct light per vertex side (the H above).
-std::vector<glm::dvec3> direct_light(const scene::Scene& scene, const SceneMesh& mesh,
-                                     const Intersector& geometry, int threads);
+// Direct light per vertex side (the H above), from the frame's lights through its geometry.
+std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads);
 
 // Vertex form factors by the options' method (scene_form_factors.cpp): `raycast`
 // (ff_rays stratified cosine rays per vertex side), `analytic` (Lambert's point-to-polygon
@@ -91,10 +91,10 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
                           uint64_t seed);
 
-// The whole solution: direct light, form factors and the solve the options ask for.
-Solution solve_scene(const scene::Scene& scene, const SceneMesh& mesh,
-                     const Intersector& geometry, const RadiosityOptions& options, int threads,
-                     SolveInfo& info);
+// The whole solution of the frame: direct light, form factors and the solve the options ask
+// for, all through the frame's geometry (the tracer's).
+Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
+                     const RadiosityOptions& options, int threads, SolveInfo& info);
 
 // The bounce count in effect: the option, else the scene's recursion_limit.
 int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options);
