@@ -17,6 +17,7 @@
 #include "interp/dump_scene.hpp"
 #include "parser/diagnostics.hpp"
 #include "parser/parser.hpp"
+#include "parser/warning_log.hpp"
 #include "render/frame.hpp"
 #include "render/image_output.hpp"
 
@@ -81,11 +82,13 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
 }  // namespace
 
 int run_frames(const Options& o, SourceManager& sources) {
-    const interp::WarningSink warn = [](const Diagnostic& d) { print_diagnostic(d); };
+    WarningLog warnings(print_diagnostic);  // a warning once per location, per frame
+    const interp::WarningSink warn = [&](const Diagnostic& d) { warnings.report(d); };
     RadiosityPass radiosity;  // one solution serves frames where only the camera moves
     for (const Frame& frame : plan_frames(o)) {
         const auto start = Clock::now();
         scene::Scene scene = interp::interpret_file(sources, o.input, frame.scene, warn);
+        warnings.flush();
         apply_radiosity_switch(scene, o.radiosity);
         const double parse_seconds = seconds_since(start);
         if (o.dump_scene) {

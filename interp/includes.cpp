@@ -4,34 +4,15 @@
 
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
+#include "parser/file_resolver.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
 
-namespace fs = std::filesystem;
-
 std::string Evaluator::find_include(const std::string& name) const {
-    if (name.empty()) return {};
-    auto usable = [](const fs::path& p) {
-        std::error_code ec;
-        return fs::is_regular_file(p, ec);
-    };
-    fs::path p(name);
-    if (p.is_absolute()) {
-        if (usable(p)) return name;
-        return !p.has_extension() && usable(name + ".inc") ? name + ".inc" : std::string();
-    }
-    std::vector<fs::path> dirs{fs::path(scene_dir_)};
-    for (const std::string& d : options_.library_paths) dirs.emplace_back(d);
-    if (options_.default_include_path && !options_.system_include_dir.empty())
-        dirs.emplace_back(options_.system_include_dir);
-    // POV-Ray also tries the name with ".inc" added (`#include "colors"`).
-    std::vector<fs::path> names{p};
-    if (!p.has_extension()) names.emplace_back(name + ".inc");
-    for (const fs::path& d : dirs)
-        for (const fs::path& n : names)
-            if (usable(d / n)) return (d / n).lexically_normal().string();
-    return {};
+    SearchPath path{scene_dir_, options_.library_paths,
+                    options_.default_include_path ? options_.system_include_dir : std::string()};
+    return FileResolver(std::move(path)).find(name, FileResolver::Kind::Include);
 }
 
 const ast::Node& Evaluator::parse_file_cached(const std::string& path, SourceLoc from) {
