@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "interp/interpret.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
 
 namespace {
@@ -61,9 +61,6 @@ int main(int argc, char** argv) {
             std::printf("%-16s %12.3f %16.3f\n", inc.c_str(), parse, eval);
         } catch (const lumen::LumenError& e) {
             std::printf("%-16s failed:\n%s", inc.c_str(), lumen::format_diagnostic(e.diag).c_str());
-            ++failures;
-        } catch (const lumen::parser::ParseError& e) {
-            std::printf("%-16s failed: %s: %s\n", inc.c_str(), e.loc.str().c_str(), e.what());
             ++failures;
         }
     }

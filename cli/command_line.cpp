@@ -3,7 +3,7 @@
 #include "cli/ini_file.hpp"
 #include "cli/switches.hpp"
 #include "cli/text.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::cli {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/ini_file.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::cli {
 namespace {

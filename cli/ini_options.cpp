@@ -8,7 +8,7 @@
 #include "cli/ini_file.hpp"
 #include "cli/options.hpp"
 #include "cli/text.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::cli {
 namespace {

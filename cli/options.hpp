@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "interp/interpret.hpp"
-#include "parser/source.hpp"
+#include "base/source.hpp"
 #include "render/image_output.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/render.hpp"

@@ -7,7 +7,7 @@
 
 #include "cli/radiosity_pass.hpp"
 #include "interp/interpret.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/radiosity/solution_io.hpp"
 
 namespace lumen::cli {

@@ -15,9 +15,9 @@
 #include "cli/progress.hpp"
 #include "cli/radiosity_pass.hpp"
 #include "interp/dump_scene.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
-#include "parser/warning_log.hpp"
+#include "base/warning_log.hpp"
 #include "render/frame.hpp"
 #include "render/image_output.hpp"
 
@@ -119,8 +119,6 @@ int run_command_line(const std::vector<std::string>& args) {
         return status;
     } catch (const LumenError& e) {
         print_diagnostic(e.diag);
-    } catch (const parser::ParseError& e) {
-        print_diagnostic(Diagnostic{Severity::Error, e.loc, e.what(), e.hint, {}});
     } catch (const std::bad_alloc&) {
         std::fputs("lumen: error: out of memory\n", stderr);
     } catch (const std::exception& e) {

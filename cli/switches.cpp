@@ -4,7 +4,7 @@
 #include <cctype>
 
 #include "cli/text.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "interp/value.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::interp {
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::interp {
 

@@ -28,7 +28,7 @@ protected:
     // Runs `text` as a file (named test.pov) and returns its top-level items.
     std::vector<Item> run(const std::string& text, const std::string& name = "test.pov") {
         const SourceFile* file = sources.add(name, text);
-        trees_.push_back(parse_or_throw([&] { return parser::parse_file(*file); }));
+        trees_.push_back(parser::parse_file(*file));
         std::vector<Item> items;
         evaluator().run_main(*trees_.back(), *file, [&](const Item& it) { items.push_back(it); });
         return items;
@@ -37,7 +37,7 @@ protected:
     // Evaluates one expression (after whatever `run` defined).
     Value value(const std::string& expr) {
         const SourceFile* file = sources.add("expr", expr);
-        trees_.push_back(parse_or_throw([&] { return parser::parse_expression(*file); }));
+        trees_.push_back(parser::parse_expression(*file));
         return evaluator().eval(*trees_.back());
     }
     double number(const std::string& expr) { return to_float(value(expr)); }

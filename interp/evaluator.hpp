@@ -149,7 +149,4 @@ private:
     std::map<const ast::Node*, const ast::Node*> macro_cache_;
 };
 
-// Runs a parser entry point, turning its ParseError into a LumenError (location and hint kept).
-ast::NodePtr parse_or_throw(const std::function<ast::NodePtr()>& parse);
-
 }  // namespace lumen::interp

@@ -4,7 +4,7 @@
 
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
-#include "parser/file_resolver.hpp"
+#include "base/file_resolver.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
@@ -19,7 +19,7 @@ const ast::Node& Evaluator::parse_file_cached(const std::string& path, SourceLoc
     if (auto it = file_cache_.find(path); it != file_cache_.end()) return *it->second;
     const SourceFile* file = sources_.load(path);
     if (!file) throw LumenError(from, "cannot read include file '" + path + "'");
-    trees_.push_back(parse_or_throw([&] { return parser::parse_file(*file); }));
+    trees_.push_back(parser::parse_file(*file));
     file_cache_[path] = trees_.back().get();
     return *trees_.back();
 }

@@ -26,7 +26,7 @@ scene::Scene run(SourceManager& sources, const SourceFile& file, const InterpOpt
         Value v = d.number ? Value{six_digits(*d.number), {}} : Value{d.text, {}};
         ev.symbols.declare(d.name, std::move(v));
     }
-    ast::NodePtr tree = parse_or_throw([&] { return parser::parse_file(file); });
+    ast::NodePtr tree = parser::parse_file(file);
     scene::Scene scene;
     ev.run_main(*tree, file, [&](const Item& item) {
         if (item.kind == Item::Kind::Keyword)

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "parser/diagnostics.hpp"
-#include "parser/source.hpp"
+#include "base/diagnostics.hpp"
+#include "base/source.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::interp {

@@ -7,14 +7,6 @@
 
 namespace lumen::interp {
 
-ast::NodePtr parse_or_throw(const std::function<ast::NodePtr()>& parse) {
-    try {
-        return parse();
-    } catch (const parser::ParseError& e) {
-        throw LumenError(e.loc, e.what(), e.hint);
-    }
-}
-
 const ast::Node* Evaluator::macro_named(const std::string& name) {
     Value* v = symbols.find(name);
     if (!v || !v->is<std::shared_ptr<const MacroValue>>()) return nullptr;
@@ -24,8 +16,7 @@ const ast::Node* Evaluator::macro_named(const std::string& name) {
 const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
     if (auto it = macro_cache_.find(&macro); it != macro_cache_.end()) return *it->second;
     const SourceFile& file = *macro.loc.file;
-    trees_.push_back(parse_or_throw(
-        [&] { return parser::parse_fragment(file, macro.raw_begin, macro.raw_end, macro.raw_loc); }));
+    trees_.push_back(parser::parse_fragment(file, macro.raw_begin, macro.raw_end, macro.raw_loc));
     macro_cache_[&macro] = trees_.back().get();
     return *trees_.back();
 }

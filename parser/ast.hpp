@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/source.hpp"
+#include "base/source.hpp"
 
 namespace lumen::ast {
 

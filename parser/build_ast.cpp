@@ -42,7 +42,7 @@ void BuildState::wrap(Kind kind, const InputIterator& at, std::size_t mark, Fini
 
 void BuildState::enter(const InputIterator& at) {
     if (++depth_ > kMaxNesting)
-        throw ParseError(loc(at), "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
+        throw LumenError(loc(at), "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
 }
 
 void BuildState::macro_body(const InputIterator& begin, const InputIterator& end) {
@@ -144,7 +144,7 @@ NodePtr postfix(NodePtr n, std::string_view, BuildState& st) {
     if (kids.size() == 1) return std::move(kids.front());
     // Each suffix wraps the expression so far; bound the resulting depth.
     if (kids.size() > std::size_t(kMaxNesting))
-        throw ParseError(kids[kMaxNesting]->loc,
+        throw LumenError(kids[kMaxNesting]->loc,
                          "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
     NodePtr base = std::move(kids.front());
     bool base_is_fresh_index = false;  // consecutive [i][j] extend one Index node

@@ -45,7 +45,7 @@ public:
     void wrap(ast::Kind kind, const InputIterator& at, std::size_t mark, Finisher finish,
               const char* end);
 
-    void enter(const InputIterator& at);  // throws ParseError beyond kMaxNesting
+    void enter(const InputIterator& at);  // throws LumenError beyond kMaxNesting
     void leave() { --depth_; }
 
     // Records the raw macro body on the innermost (Macro) frame.

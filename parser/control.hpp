@@ -1,5 +1,5 @@
 // The PEGTL control class for the SDL grammar: builds the tree (build_ast.hpp), guards the
-// nesting depth, and turns must<> failures into ParseError with the messages of errors.hpp.
+// nesting depth, and turns must<> failures into LumenError with the messages of errors.hpp.
 #pragma once
 #include <tao/pegtl.hpp>
 
@@ -47,7 +47,7 @@ struct build_control : tao::pegtl::normal<Rule> {
     [[noreturn]] static void raise(const ParseInput& in, BuildState& st) {
         std::string hint;
         std::string msg = error_text<Rule>(in, st, hint);
-        throw ParseError(st.loc(in.iterator()), msg, hint);
+        throw LumenError(st.loc(in.iterator()), msg, hint);
     }
 };
 

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <set>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::parser {
@@ -42,11 +42,11 @@ void parse_macros(const SourceFile& file, const ast::Node& n, Outcome& out) {
         try {
             ast::NodePtr body = parse_fragment(file, n.raw_begin, n.raw_end, n.raw_loc);
             parse_macros(file, *body, out);
-        } catch (const ParseError& e) {
+        } catch (const LumenError& e) {
             out.failed_macros.push_back(n.text);
             if (!kCrossStructuredMacros.count(n.text)) {
                 out.ok = false;
-                out.error = format_diagnostic({Severity::Error, e.loc, e.what(), e.hint, {}});
+                out.error = format_diagnostic(e.diag);
             }
         }
     }
@@ -60,9 +60,9 @@ Outcome parse_whole(const fs::path& path, SourceManager& sources) {
     try {
         ast::NodePtr root = parse_file(*file);
         parse_macros(*file, *root, out);
-    } catch (const ParseError& e) {
+    } catch (const LumenError& e) {
         out.ok = false;
-        out.error = format_diagnostic({Severity::Error, e.loc, e.what(), e.hint, {}});
+        out.error = format_diagnostic(e.diag);
     }
     return out;
 }

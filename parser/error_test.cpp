@@ -43,10 +43,10 @@ TEST(Errors, UnknownDirectiveSuggestsTheClosestOne) {
     try {
         parse_file(f);
         FAIL() << "no error";
-    } catch (const ParseError& e) {
+    } catch (const LumenError& e) {
         EXPECT_STREQ(e.what(), "unknown directive '#declre'");
-        EXPECT_EQ(e.hint, "did you mean 'declare'?");
-        EXPECT_EQ(e.loc.column, 1u);
+        EXPECT_EQ(e.diag.hint, "did you mean 'declare'?");
+        EXPECT_EQ(e.diag.loc.column, 1u);
     }
 }
 
@@ -121,7 +121,7 @@ TEST(Nesting, OtherDeepConstructs) {
 namespace lumen::parser {
 namespace {
 
-// Random token soup: every input either parses or gives a ParseError; nothing else escapes.
+// Random token soup: every input either parses or gives a LumenError; nothing else escapes.
 TEST(Robustness, RandomTokenSoupNeverCrashes) {
     const char* tokens[] = {"{", "}", "(", ")", "<", ">", "[", "]", ",", ";", "#if", "#else",
                             "#end", "#declare", "#macro", "#while", "#switch", "#case", "=",
@@ -142,10 +142,10 @@ TEST(Robustness, RandomTokenSoupNeverCrashes) {
         try {
             parse_file(f);
             ++parsed;
-        } catch (const ParseError& e) {
+        } catch (const LumenError& e) {
             ++rejected;
-            EXPECT_GE(e.loc.line, 1u) << text;
-            EXPECT_LE(e.loc.byte, text.size()) << text;
+            EXPECT_GE(e.diag.loc.line, 1u) << text;
+            EXPECT_LE(e.diag.loc.byte, text.size()) << text;
         }
     }
     EXPECT_GT(parsed, 0);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "parser/build_ast.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/grammar.hpp"
 
 namespace lumen::parser {

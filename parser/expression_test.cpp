@@ -141,7 +141,7 @@ TEST(Expression, IfInsideExpression) {
 
 TEST(Expression, ExpressionEntryRejectsTrailingText) {
     SourceFile f{"expr", "1 + 2 }"};
-    EXPECT_THROW(parse_expression(f), ParseError);
+    EXPECT_THROW(parse_expression(f), LumenError);
 }
 
 }  // namespace

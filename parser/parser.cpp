@@ -26,10 +26,10 @@ ast::NodePtr run(Input& in, const SourceFile& file) {
             const auto& p = e.positions().front();
             loc = SourceLoc{&file, uint32_t(p.line), uint32_t(p.column), uint32_t(p.byte)};
         }
-        throw ParseError(loc, std::string(e.message()));
+        throw LumenError(loc, std::string(e.message()));
     }
     ast::NodePtr result = st.take_result();
-    if (!result) throw ParseError(SourceLoc{&file, 1, 1, 0}, "nothing parsed");
+    if (!result) throw LumenError(SourceLoc{&file, 1, 1, 0}, "nothing parsed");
     return result;
 }
 
@@ -42,7 +42,7 @@ ast::NodePtr parse_file(const SourceFile& file) {
 
 ast::NodePtr parse_fragment(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start) {
     if (end > file.text.size() || begin > end)
-        throw ParseError(start, "macro body outside its file");
+        throw LumenError(start, "macro body outside its file");
     Input in(file.text.data() + begin, file.text.data() + end, file.name.c_str(), begin,
              start.line, start.column);
     return run<rules::fragment>(in, file);

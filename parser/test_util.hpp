@@ -31,13 +31,13 @@ inline std::string expr(const std::string& text) {
     return dump(*parse_expression(f));
 }
 
-// The ParseError message (with "@line:col") for text that must fail, or "no error".
+// The error message (with "@line:col") for text that must fail, or "no error".
 inline std::string error_of(const std::string& text) {
     try {
         parse_text(text);
-    } catch (const ParseError& e) {
-        return std::string(e.what()) + " @" + std::to_string(e.loc.line) + ":" +
-               std::to_string(e.loc.column);
+    } catch (const LumenError& e) {
+        return std::string(e.what()) + " @" + std::to_string(e.diag.loc.line) + ":" +
+               std::to_string(e.diag.loc.column);
     }
     return "no error";
 }

@@ -1,6 +1,6 @@
 #include "render/frame.hpp"
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::render {
 

@@ -1,7 +1,7 @@
 // RenderFrame: the one compiled scene that the pre-passes and the tracer share.
 #include <gtest/gtest.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/frame.hpp"
 #include "render/geometry_test_util.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/geometry_test_util.hpp"
 
 namespace lumen::render {

@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/image_files.hpp"
 #include "render/level_table.hpp"
 

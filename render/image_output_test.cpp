@@ -10,7 +10,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/image_output.hpp"
 
 namespace lumen::render {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/node.hpp"
 
 namespace lumen::render {

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/antialias.hpp"
 #include "render/camera.hpp"
 #include "render/frame.hpp"

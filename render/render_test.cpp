@@ -1,7 +1,7 @@
 // render(): blocks on threads, partial renders, stats and errors, with the real Geometry.
 #include <gtest/gtest.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/render.hpp"
 #include "render/shade_test_support.hpp"
 

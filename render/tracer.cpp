@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/fog.hpp"
 #include "render/frame.hpp"
 #include "render/pattern.hpp"

@@ -1,7 +1,7 @@
 // Whole-image checks of the tracer against POV-Ray 3.7 renders (render/testdata).
 #include <gtest/gtest.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/shade_test_support.hpp"
 
 namespace lumen::render::test {

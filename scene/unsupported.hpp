@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "parser/source.hpp"
+#include "base/source.hpp"
 
 namespace lumen::scene {
 

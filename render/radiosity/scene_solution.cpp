@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/camera.hpp"
 #include "render/lights.hpp"
 #include "render/radiosity/ray_cast.hpp"

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::render::radiosity {
 

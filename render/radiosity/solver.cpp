@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen::render::radiosity {
 

@@ -2,7 +2,7 @@
 // per colour channel. O(n³); the answer is exact up to round-off.
 #include <cmath>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/radiosity/solver.hpp"
 
 namespace lumen::render::radiosity {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "render/radiosity/closed_forms.hpp"
 #include "render/radiosity/radiosity_test_util.hpp"
 #include "render/radiosity/solver.hpp"

@@ -1,4 +1,4 @@
-// libFuzzer target: the parser must turn any input into a syntax tree or a ParseError, and
+// libFuzzer target: the parser must turn any input into a syntax tree or a LumenError, and
 // the interpreter (with small limits) into a scene or a LumenError; never crash, hang or
 // overflow the stack. Set LUMEN_FUZZ_PARSE_ONLY=1 to fuzz the parser alone (or build with
 // -DLUMEN_FUZZ_PARSER_ONLY to link only the parser library).
@@ -10,7 +10,7 @@
 #ifndef LUMEN_FUZZ_PARSER_ONLY
 #include "interp/interpret.hpp"
 #endif
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
 
 namespace {
@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const lumen::SourceFile* file = sources.add("fuzz.pov", text);
     try {
         lumen::parser::parse_file(*file);
-    } catch (const lumen::parser::ParseError&) {
+    } catch (const lumen::LumenError&) {
         return 0;  // the interpreter would stop at the same error
     } catch (const lumen::LumenError&) {
         return 0;
@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         lumen::interp::interpret_text(sources, "fuzz.pov", text, small_limits());
     } catch (const lumen::LumenError&) {
-    } catch (const lumen::parser::ParseError&) {
+    } catch (const lumen::LumenError&) {
     }
 #endif
     return 0;

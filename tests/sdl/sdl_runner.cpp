@@ -17,7 +17,7 @@
 #include "cli/big_stack.hpp"
 #include "interp/dump_scene.hpp"
 #include "interp/interpret.hpp"
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
 
 namespace {
@@ -71,8 +71,6 @@ Outcome interpret_case(const std::string& name) {
             out.ok = true;
         } catch (const LumenError& e) {
             out.diagnostic = format_diagnostic(e.diag);
-        } catch (const parser::ParseError& e) {
-            out.diagnostic = format_diagnostic(Diagnostic{Severity::Error, e.loc, e.what(), e.hint, {}});
         } catch (const std::exception& e) {
             out.diagnostic = std::string("exception: ") + e.what();
         }

@@ -1,4 +1,4 @@
-#include "parser/file_resolver.hpp"
+#include "base/file_resolver.hpp"
 
 #include <gtest/gtest.h>
 

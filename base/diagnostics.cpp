@@ -1,4 +1,4 @@
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 #include <algorithm>
 

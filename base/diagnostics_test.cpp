@@ -1,5 +1,5 @@
 // Diagnostics: message layout and "did you mean" suggestions.
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "parser/warning_log.hpp"
+#include "base/warning_log.hpp"
 
 #include <gtest/gtest.h>
 

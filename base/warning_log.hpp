@@ -9,7 +9,7 @@
 #include <string>
 #include <tuple>
 
-#include "parser/diagnostics.hpp"
+#include "base/diagnostics.hpp"
 
 namespace lumen {
 

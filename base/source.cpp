@@ -1,4 +1,4 @@
-#include "parser/source.hpp"
+#include "base/source.hpp"
 
 #include <fstream>
 #include <sstream>
