@@ -72,12 +72,29 @@ scene::Object object_of(ItemCursor& cur, scene::Shape shape, const Extra& extra 
 
 scene::ObjectPtr share(scene::Object obj) { return std::make_shared<scene::Object>(std::move(obj)); }
 
-// One reader per shape of scene/shape_list.hpp: the block after its keyword.
+// An object whose shape has a flag keyword of its own among its modifiers (open, sturm).
+template <class T>
+scene::ObjectPtr object_with_flag(ItemCursor& cur, const T& shape, const char* word,
+                                  bool T::*flag) {
+    bool set = false;
+    scene::Object obj = object_of(cur, shape, flag_keyword(word, set), {word});
+    std::get<T>(obj.shape).*flag = set;
+    return share(std::move(obj));
+}
+
+// Cylinders and cones: the axis needs a length, and `open` drops the caps.
+template <class T>
+scene::ObjectPtr axis_object(ItemCursor& cur, const T& shape, const char* what) {
+    if (shape.base == shape.cap)
+        cur.fail(cur.block_loc(), std::string("degenerate ") + what + ": base equals cap");
+    return object_with_flag(cur, shape, "open", &T::open);
+}
+
+// One reader per shape of scene/shape_list.hpp: the block after its keyword. Arguments read
+// in braced initialisers are read in order (C++ evaluates those left to right).
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Sphere>, ItemCursor& cur) {
-    scene::Sphere s;
-    s.center = cur.expect_vector("");
-    s.radius = cur.expect_float("");
+    scene::Sphere s{cur.expect_vector(""), cur.expect_float("")};
     return share(object_of(cur, s));
 }
 
@@ -95,38 +112,19 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Box>, ItemCursor& cur)
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Cylinder>, ItemCursor& cur) {
-    scene::Cylinder c;
-    c.base = cur.expect_vector("");
-    c.cap = cur.expect_vector("");
-    c.radius = cur.expect_float("");
-    if (c.base == c.cap) cur.fail(cur.block_loc(), "degenerate cylinder: base equals cap");
-    bool open = false;
-    scene::Object obj = object_of(cur, c, flag_keyword("open", open), {"open"});
-    std::get<scene::Cylinder>(obj.shape).open = open;
-    return share(std::move(obj));
+    scene::Cylinder c{cur.expect_vector(""), cur.expect_vector(""), cur.expect_float("")};
+    return axis_object(cur, c, "cylinder");
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Cone>, ItemCursor& cur) {
-    scene::Cone c;
-    c.base = cur.expect_vector("");
-    c.base_radius = cur.expect_float("");
-    c.cap = cur.expect_vector("");
-    c.cap_radius = cur.expect_float("");
-    if (c.base == c.cap) cur.fail(cur.block_loc(), "degenerate cone: base equals cap");
-    bool open = false;
-    scene::Object obj = object_of(cur, c, flag_keyword("open", open), {"open"});
-    std::get<scene::Cone>(obj.shape).open = open;
-    return share(std::move(obj));
+    scene::Cone c{cur.expect_vector(""), cur.expect_float(""), cur.expect_vector(""),
+                  cur.expect_float("")};
+    return axis_object(cur, c, "cone");
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Torus>, ItemCursor& cur) {
-    scene::Torus t;
-    t.major = cur.expect_float("");
-    t.minor = cur.expect_float("");
-    bool sturm = false;
-    scene::Object obj = object_of(cur, t, flag_keyword("sturm", sturm), {"sturm"});
-    std::get<scene::Torus>(obj.shape).sturm = sturm;
-    return share(std::move(obj));
+    scene::Torus t{cur.expect_float(""), cur.expect_float("")};
+    return object_with_flag(cur, t, "sturm", &scene::Torus::sturm);
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Disc>, ItemCursor& cur) {
