@@ -9,27 +9,24 @@ namespace lumen::interp {
 
 namespace {
 
-// Blocks built into typed values.
-const std::vector<std::string> kBuilt = {
-    "sphere", "plane", "box", "cylinder", "cone", "torus", "disc", "triangle",
-    "smooth_triangle", "polygon", "mesh", "mesh2", "object", "union", "merge", "intersection",
-    "difference", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
+// Blocks built into typed values: the shapes of scene/shape_list.hpp, then the rest.
+const std::vector<std::string> kBuilt = scene::keywords_then(scene::kShapeKeywords, {
+    "object", "union", "merge", "intersection", "difference", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
     "light_source", "transform", "color_map", "colour_map", "pigment_map", "texture_map",
-    "normal_map", "fog", "sky_sphere"};
+    "normal_map", "fog", "sky_sphere"});
 // Blocks that only mean something inside a parent: returned as BlockValue.
 const std::vector<std::string> kData = {
     "reflection", "irid", "radiosity", "vertex_vectors", "normal_vectors", "uv_vectors",
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
     "looks_like", "projected_through", "global_settings", "background", "interior_texture",
     "default"};  // `default { }`: the old spelling of #default
-// Reserved block words lumen parses but does not build (the evaluator makes Unsupported).
-const std::vector<std::string> kUnsupported = {
-    "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal", "lathe",
-    "lemon", "light_group", "ovus", "parametric", "poly", "polynomial", "prism", "quadric",
-    "quartic", "sor", "sphere_sweep", "superellipsoid", "text", "media", "photons",
+// Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
+// the unrendered shapes, then the rest.
+const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
+    "media", "photons",
     "subsurface", "warp", "image_map", "bump_map", "material_map", "image_pattern",
     "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
-    "function", "rainbow", "tiles", "mesh_camera"};
+    "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();

@@ -1,6 +1,7 @@
 // ItemCursor and the builders driven by hand-made items (no parser involved).
 #include "interp/build_common.hpp"
 #include "interp/build_test_support.hpp"
+#include "parser/keywords.hpp"
 
 namespace lumen::interp::testing {
 namespace {
@@ -88,6 +89,20 @@ TEST(BuildBlock, DataBlocksComeBackAsBlockValues) {
     EXPECT_FALSE(is_supported_block("blob"));
     const auto& known = known_block_keywords();
     EXPECT_NE(std::find(known.begin(), known.end(), "isosurface"), known.end());
+}
+
+// The shape list's keywords are POV-Ray reserved words; the listed shapes build objects and
+// the unrendered ones do not.
+TEST(BuildBlock, ShapeListKeywordsAreReservedBlocks) {
+    for (std::string_view kw : scene::kShapeKeywords) {
+        EXPECT_TRUE(parser::is_reserved(kw)) << kw;
+        EXPECT_TRUE(is_supported_block(std::string(kw))) << kw;
+    }
+    for (std::string_view kw : scene::kUnsupportedShapeKeywords) {
+        EXPECT_TRUE(parser::is_reserved(kw)) << kw;
+        EXPECT_FALSE(is_supported_block(std::string(kw))) << kw;
+        EXPECT_TRUE(is_unsupported_shape(std::string(kw))) << kw;
+    }
 }
 
 TEST(BuildBlock, DefaultPigmentStartsNewTextures) {

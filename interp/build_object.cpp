@@ -1,6 +1,10 @@
-// Primitive shapes and `object { }` (povray-semantics.md §9.2): the shape's own arguments,
-// then the shared object modifiers.
+// Primitive shapes and `object { }`: as in POV-Ray, a shape's own arguments come first, then
+// the object modifiers shared by every object (and the shape's own flags: open, sturm, ...).
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string_view>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 
@@ -54,74 +58,142 @@ scene::Polygon read_polygon(ItemCursor& cur) {
     return poly;
 }
 
-scene::Shape read_shape(ItemCursor& cur) {
-    const std::string& kw = cur.what();
-    if (kw == "sphere") {
-        scene::Sphere s;
-        s.center = cur.expect_vector("");
-        s.radius = cur.expect_float("");
-        return s;
+// An object of the shape just read: the object modifiers follow its arguments, and `extra`
+// takes the shape's own modifier keywords (`words`).
+template <class Extra = decltype(no_extra)>
+scene::Object object_of(ItemCursor& cur, scene::Shape shape, const Extra& extra = no_extra,
+                        const std::vector<std::string>& words = kNoExtra) {
+    scene::Object obj;
+    obj.loc = cur.block_loc();
+    obj.shape = std::move(shape);
+    read_object_modifiers(cur, obj, extra, words);
+    return obj;
+}
+
+scene::ObjectPtr share(scene::Object obj) { return std::make_shared<scene::Object>(std::move(obj)); }
+
+// An object whose shape has a flag keyword of its own among its modifiers (open, sturm).
+template <class T>
+scene::ObjectPtr object_with_flag(ItemCursor& cur, const T& shape, const char* word,
+                                  bool T::*flag) {
+    bool set = false;
+    scene::Object obj = object_of(cur, shape, flag_keyword(word, set), {word});
+    std::get<T>(obj.shape).*flag = set;
+    return share(std::move(obj));
+}
+
+// Cylinders and cones: the axis needs a length, and `open` drops the caps.
+template <class T>
+scene::ObjectPtr axis_object(ItemCursor& cur, const T& shape, const char* what) {
+    if (shape.base == shape.cap)
+        cur.fail(cur.block_loc(), std::string("degenerate ") + what + ": base equals cap");
+    return object_with_flag(cur, shape, "open", &T::open);
+}
+
+// One reader per shape of scene/shape_list.hpp: the block after its keyword. Arguments read
+// in braced initialisers are read in order (C++ evaluates those left to right).
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Sphere>, ItemCursor& cur) {
+    scene::Sphere s{cur.expect_vector(""), cur.expect_float("")};
+    return share(object_of(cur, s));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Plane>, ItemCursor& cur) {
+    scene::Plane p;
+    SourceLoc loc = cur.next_is_vector_like() ? cur.peek().loc : cur.here();
+    p.normal = unit_or_fail(cur, cur.expect_vector(""), loc, "the plane normal");
+    p.distance = cur.expect_float("");
+    return share(object_of(cur, p));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Box>, ItemCursor& cur) {
+    glm::dvec3 a = cur.expect_vector(""), b = cur.expect_vector("");
+    return share(object_of(cur, scene::Box{glm::min(a, b), glm::max(a, b)}));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Cylinder>, ItemCursor& cur) {
+    scene::Cylinder c{cur.expect_vector(""), cur.expect_vector(""), cur.expect_float("")};
+    return axis_object(cur, c, "cylinder");
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Cone>, ItemCursor& cur) {
+    scene::Cone c{cur.expect_vector(""), cur.expect_float(""), cur.expect_vector(""),
+                  cur.expect_float("")};
+    return axis_object(cur, c, "cone");
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Torus>, ItemCursor& cur) {
+    scene::Torus t{cur.expect_float(""), cur.expect_float("")};
+    return object_with_flag(cur, t, "sturm", &scene::Torus::sturm);
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Disc>, ItemCursor& cur) {
+    scene::Disc d;
+    d.center = cur.expect_vector("");
+    SourceLoc loc = cur.next_is_vector_like() ? cur.peek().loc : cur.here();
+    d.normal = unit_or_fail(cur, cur.expect_vector(""), loc, "the disc normal");
+    d.radius = cur.expect_float("");
+    if (auto hole = cur.optional_float()) d.hole = *hole;
+    return share(object_of(cur, d));
+}
+
+// triangle and smooth_triangle.
+scene::ObjectPtr read_primitive(std::type_identity<scene::Triangle>, ItemCursor& cur) {
+    scene::Triangle t;
+    t.smooth = cur.what() == "smooth_triangle";
+    for (int i = 0; i < 3; ++i) {
+        t.p[i] = cur.expect_vector("");
+        if (!t.smooth) continue;
+        glm::dvec3 n = cur.expect_vector("");
+        t.n[i] = glm::length(n) > 0 ? glm::normalize(n) : n;
     }
-    if (kw == "plane") {
-        scene::Plane p;
-        SourceLoc loc = cur.next_is_vector_like() ? cur.peek().loc : cur.here();
-        p.normal = unit_or_fail(cur, cur.expect_vector(""), loc, "the plane normal");
-        p.distance = cur.expect_float("");
-        return p;
+    // Mesh triangles may carry `uv_vectors <u,v> <u,v> <u,v>`: only uv_mapping uses them.
+    auto uv = [&](const Item& item) {
+        if (item.kind != Item::Kind::Keyword || item.keyword != "uv_vectors") return false;
+        for (int i = 0; i < 3; ++i) cur.expect_vecn("uv_vectors");
+        return true;
+    };
+    return share(object_of(cur, t, uv, {"uv_vectors"}));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Polygon>, ItemCursor& cur) {
+    return share(object_of(cur, read_polygon(cur)));
+}
+
+// mesh and mesh2 (build_mesh.cpp).
+scene::ObjectPtr read_primitive(std::type_identity<scene::Mesh>, ItemCursor& cur) {
+    return cur.what() == "mesh" ? build_mesh(cur) : build_mesh2(cur);
+}
+
+bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
+    return std::find(words.begin(), words.end(), kw) != words.end();
+}
+
+// A copy of a declared object: `object { Ident modifiers }`.
+scene::ObjectPtr read_object_copy(ItemCursor& cur) {
+    scene::Object obj;
+    if (cur.next_is<scene::ObjectPtr>()) {
+        obj = *cur.next().value.as<scene::ObjectPtr>();
+    } else if (cur.next_is<scene::Unsupported>()) {
+        obj = *unsupported_object(cur.next().value.as<scene::Unsupported>());
+    } else {
+        cur.fail_expected("an object", "");
     }
-    if (kw == "box") {
-        glm::dvec3 a = cur.expect_vector(""), b = cur.expect_vector("");
-        return scene::Box{glm::min(a, b), glm::max(a, b)};
-    }
-    if (kw == "cylinder") {
-        scene::Cylinder c;
-        c.base = cur.expect_vector("");
-        c.cap = cur.expect_vector("");
-        c.radius = cur.expect_float("");
-        if (c.base == c.cap) cur.fail(cur.block_loc(), "degenerate cylinder: base equals cap");
-        return c;
-    }
-    if (kw == "cone") {
-        scene::Cone c;
-        c.base = cur.expect_vector("");
-        c.base_radius = cur.expect_float("");
-        c.cap = cur.expect_vector("");
-        c.cap_radius = cur.expect_float("");
-        if (c.base == c.cap) cur.fail(cur.block_loc(), "degenerate cone: base equals cap");
-        return c;
-    }
-    if (kw == "torus") {
-        scene::Torus t;
-        t.major = cur.expect_float("");
-        t.minor = cur.expect_float("");
-        return t;
-    }
-    if (kw == "disc") {
-        scene::Disc d;
-        d.center = cur.expect_vector("");
-        SourceLoc loc = cur.next_is_vector_like() ? cur.peek().loc : cur.here();
-        d.normal = unit_or_fail(cur, cur.expect_vector(""), loc, "the disc normal");
-        d.radius = cur.expect_float("");
-        if (auto hole = cur.optional_float()) d.hole = *hole;
-        return d;
-    }
-    if (kw == "triangle") {
-        scene::Triangle t;
-        for (auto& p : t.p) p = cur.expect_vector("");
-        return t;
-    }
-    if (kw == "smooth_triangle") {
-        scene::Triangle t;
-        t.smooth = true;
-        for (int i = 0; i < 3; ++i) {
-            t.p[i] = cur.expect_vector("");
-            glm::dvec3 n = cur.expect_vector("");
-            t.n[i] = glm::length(n) > 0 ? glm::normalize(n) : n;
+    obj.loc = cur.block_loc();
+    // The copied shape's own flags may be set again: `object { Torus sturm }`.
+    auto shape_flag = [&](const Item& item) {
+        if (item.kind != Item::Kind::Keyword) return false;
+        if (item.keyword == "sturm") {
+            if (auto* t = std::get_if<scene::Torus>(&obj.shape)) t->sturm = true;
+            return true;
         }
-        return t;
-    }
-    if (kw == "polygon") return read_polygon(cur);
-    cur.fail(cur.block_loc(), "'" + kw + "' is not a shape");
+        if (item.keyword != "open") return false;
+        if (auto* c = std::get_if<scene::Cylinder>(&obj.shape)) c->open = true;
+        if (auto* c = std::get_if<scene::Cone>(&obj.shape)) c->open = true;
+        return true;
+    };
+    read_object_modifiers(cur, obj, shape_flag, {"sturm", "open"});
+    return share(std::move(obj));
 }
 
 }  // namespace
@@ -134,68 +206,20 @@ scene::ObjectPtr unsupported_object(const scene::Unsupported& u) {
 }
 
 bool is_unsupported_shape(const std::string& keyword) {
-    static const std::vector<std::string> shapes = {
-        "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal",
-        "lathe", "lemon", "light_group", "ovus", "parametric", "poly", "polynomial", "prism",
-        "quadric", "quartic", "sor", "sphere_sweep", "superellipsoid", "text"};
-    for (const std::string& s : shapes)
-        if (s == keyword) return true;
-    return false;
+    const auto& shapes = scene::kUnsupportedShapeKeywords;
+    return std::find(std::begin(shapes), std::end(shapes), keyword) != std::end(shapes);
 }
 
 scene::ObjectPtr build_object(ItemCursor& cur) {
     const std::string& kw = cur.what();
     if (kw == "union" || kw == "merge" || kw == "intersection" || kw == "difference")
         return build_csg(cur);
-    if (kw == "mesh") return build_mesh(cur);
-    if (kw == "mesh2") return build_mesh2(cur);
-    scene::Object obj;
-    if (kw == "object") {
-        if (cur.next_is<scene::ObjectPtr>()) {
-            obj = *cur.next().value.as<scene::ObjectPtr>();
-        } else if (cur.next_is<scene::Unsupported>()) {
-            obj = *unsupported_object(cur.next().value.as<scene::Unsupported>());
-        } else {
-            cur.fail_expected("an object", "");
-        }
-        obj.loc = cur.block_loc();
-        // The copied shape's own flags may be set again: `object { Torus sturm }`.
-        auto shape_flag = [&](const Item& item) {
-            if (item.kind != Item::Kind::Keyword) return false;
-            if (item.keyword == "sturm") {
-                if (auto* t = std::get_if<scene::Torus>(&obj.shape)) t->sturm = true;
-                return true;
-            }
-            if (item.keyword != "open") return false;
-            if (auto* c = std::get_if<scene::Cylinder>(&obj.shape)) c->open = true;
-            if (auto* c = std::get_if<scene::Cone>(&obj.shape)) c->open = true;
-            return true;
-        };
-        read_object_modifiers(cur, obj, shape_flag, {"sturm", "open"});
-        return std::make_shared<scene::Object>(std::move(obj));
-    }
-    obj.loc = cur.block_loc();
-    bool open = false, sturm = false;
-    obj.shape = read_shape(cur);
-    if (kw == "cylinder" || kw == "cone") {
-        read_object_modifiers(cur, obj, flag_keyword("open", open), {"open"});
-        if (auto* c = std::get_if<scene::Cylinder>(&obj.shape)) c->open = open;
-        if (auto* c = std::get_if<scene::Cone>(&obj.shape)) c->open = open;
-    } else if (kw == "torus") {
-        read_object_modifiers(cur, obj, flag_keyword("sturm", sturm), {"sturm"});
-        std::get<scene::Torus>(obj.shape).sturm = sturm;
-    } else if (kw == "triangle" || kw == "smooth_triangle") {
-        // Mesh triangles may carry `uv_vectors <u,v> <u,v> <u,v>`: only uv_mapping uses them.
-        auto uv = [&](const Item& item) {
-            if (item.kind != Item::Kind::Keyword || item.keyword != "uv_vectors") return false;
-            for (int i = 0; i < 3; ++i) cur.expect_vecn("uv_vectors");
-            return true;
-        };
-        read_object_modifiers(cur, obj, uv, {"uv_vectors"});
-    } else {
-        read_object_modifiers(cur, obj, no_extra, kNoExtra);
-    }
-    return std::make_shared<scene::Object>(std::move(obj));
+    if (kw == "object") return read_object_copy(cur);
+#define LUMEN_READ_SHAPE(T, ...) \
+    if (is_keyword_of(kw, {__VA_ARGS__})) return read_primitive(std::type_identity<scene::T>{}, cur);
+    LUMEN_PRIMITIVE_SHAPES(LUMEN_READ_SHAPE)
+#undef LUMEN_READ_SHAPE
+    cur.fail(cur.block_loc(), "'" + kw + "' is not a shape");
 }
 
 }  // namespace lumen::interp

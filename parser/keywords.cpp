@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "parser/parser.hpp"
+#include "scene/shape_list.hpp"
 
 namespace lumen::parser {
 
@@ -112,10 +113,8 @@ const std::vector<std::string>& reserved_words() {
 }
 
 const std::vector<std::string>& block_keywords() {
-    static const std::vector<std::string> words = {
-        "sphere", "plane", "box", "cylinder", "cone", "torus", "disc", "triangle",
-        "smooth_triangle", "polygon", "mesh", "mesh2", "union", "merge", "intersection",
-        "difference", "object", "camera", "light_source", "background", "global_settings",
+    static const std::vector<std::string> words = scene::keywords_then(scene::kShapeKeywords, {
+        "union", "merge", "intersection", "difference", "object", "camera", "light_source", "background", "global_settings",
         "sky_sphere", "fog", "rainbow", "texture", "pigment", "finish", "normal", "interior",
         "material", "media", "photons", "radiosity", "color_map", "colour_map", "pigment_map",
         "texture_map", "normal_map", "slope_map", "density_map", "material_map", "reflection",
@@ -128,7 +127,7 @@ const std::vector<std::string>& block_keywords() {
         "projected_through", "light_group", "tiles", "pigment_pattern", "cutaway_textures",
         "interior_texture", "subsurface", "area_light", "mesh_camera", "pattern", "polynomial",
         "density_file", "component", "cubic_spline", "noise_generator", "gradient",
-    };
+    });
     return words;
 }
 

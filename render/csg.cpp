@@ -3,7 +3,6 @@
 // CSG hits are found by asking each child for its nearest hit and, when the operation rejects
 // it, asking again from just beyond it: no hit lists, no allocation.
 #include <cmath>
-#include <type_traits>
 
 #include "render/node.hpp"
 
@@ -14,32 +13,6 @@ namespace {
 // Rejected hits one child may produce along a ray before it is given up on: a guard against
 // a root finder that returns the same surface again an ulp further on, forever.
 constexpr int kMaxRejected = 1024;
-
-template <class S>
-constexpr bool has_inside = requires(const S& s, const glm::dvec3& p) { inside(s, p); };
-
-bool shape_intersect(const ShapeData& d, const LocalRay& r, double tmin, double tmax,
-                     ShapeHit& h) {
-    return std::visit(
-        [&](const auto& s) -> bool {
-            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, std::unique_ptr<MeshShape>>)
-                return intersect(*s, r, tmin, tmax, h);
-            else
-                return intersect(s, r, tmin, tmax, h);
-        },
-        d);
-}
-
-bool shape_inside(const ShapeData& d, const glm::dvec3& p) {
-    return std::visit(
-        [&](const auto& s) -> bool {
-            using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, std::unique_ptr<MeshShape>>) return inside(*s, p);
-            else if constexpr (has_inside<S>) return inside(s, p);
-            else return false;  // triangle, disc, polygon: no inside
-        },
-        d);
-}
 
 bool inside_all(const NodeStore& store, uint32_t first, uint32_t count, const glm::dvec3& p) {
     for (uint32_t i = 0; i < count; ++i)

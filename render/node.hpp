@@ -9,16 +9,13 @@
 
 #include "render/bounds.hpp"
 #include "render/ray.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/shape_data.hpp"
 #include "scene/object.hpp"
 
 namespace lumen::render {
 
 // Difference {A B C} compiles to Intersection {A, inverse B, inverse C}.
 enum class NodeKind : uint8_t { Shape, Union, Merge, Intersection };
-
-using ShapeData = std::variant<SphereShape, PlaneShape, BoxShape, ConeShape, TorusShape,
-                               DiscShape, TriangleShape, PolygonShape, std::unique_ptr<MeshShape>>;
 
 struct Node {
     NodeKind kind = NodeKind::Shape;
@@ -48,10 +45,6 @@ struct NodeStore {
     std::vector<ShapeData> shapes;
     std::vector<scene::Transform> transforms;
 };
-
-// Replaces a primitive by the same shape in world space when its kind allows that under xf
-// (see shape_baking.cpp); false leaves the transform to be applied per ray.
-bool bake_transform(const scene::Shape& shape, const scene::Transform& xf, ShapeData& out);
 
 // CSG nesting deeper than this is refused (keeps every recursion bounded).
 constexpr int kMaxNesting = 1000;

@@ -1,7 +1,6 @@
 // Turns scene objects into nodes: composes transforms, resolves inheritance (texture,
 // interior, no_shadow, inverse parity) and computes the boxes used for culling.
 #include <cmath>
-#include <type_traits>
 
 #include "base/diagnostics.hpp"
 #include "render/node.hpp"
@@ -15,47 +14,6 @@ Aabb padded(Aabb b) {
     if (b.empty() || !b.finite()) return b;
     glm::dvec3 pad = 1e-9 * (1.0 + glm::max(glm::abs(b.lo), glm::abs(b.hi)));
     return {b.lo - pad, b.hi + pad};
-}
-
-template <class S>
-constexpr bool has_inside = requires(const S& s, const glm::dvec3& p) { inside(s, p); };
-
-double min_depth_of(const ShapeData& d) {
-    if (std::holds_alternative<TorusShape>(d)) return kDepthTorus;
-    if (std::holds_alternative<PolygonShape>(d)) return kDepthPolygon;
-    return kDepthDefault;
-}
-
-// The prepared shape of a primitive; false for CSG.
-bool make_shape(const scene::Shape& shape, bool accelerate, ShapeData& out) {
-    if (auto* s = std::get_if<scene::Sphere>(&shape)) out = make_sphere(*s);
-    else if (auto* s = std::get_if<scene::Plane>(&shape)) out = make_plane(*s);
-    else if (auto* s = std::get_if<scene::Box>(&shape)) out = make_box(*s);
-    else if (auto* s = std::get_if<scene::Cylinder>(&shape)) out = make_cylinder(*s);
-    else if (auto* s = std::get_if<scene::Cone>(&shape)) out = make_cone(*s);
-    else if (auto* s = std::get_if<scene::Torus>(&shape)) out = make_torus(*s);
-    else if (auto* s = std::get_if<scene::Disc>(&shape)) out = make_disc(*s);
-    else if (auto* s = std::get_if<scene::Triangle>(&shape)) out = make_triangle(*s);
-    else if (auto* s = std::get_if<scene::Polygon>(&shape)) out = make_polygon(*s);
-    else if (auto* s = std::get_if<scene::Mesh>(&shape)) out = make_mesh(*s, accelerate);
-    else return false;
-    return true;
-}
-
-// Object-space boxes of a shape: where it can be hit, and where it can be inside.
-void shape_boxes(const ShapeData& d, Aabb& surface, Aabb& solid) {
-    std::visit(
-        [&](const auto& s) {
-            using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, std::unique_ptr<MeshShape>>) {
-                surface = bounds(*s);
-                solid = s->mesh->inside_vector ? surface : Aabb{};
-            } else {
-                surface = bounds(s);
-                solid = has_inside<S> ? surface : Aabb{};
-            }
-        },
-        d);
 }
 
 bool transform_is_finite(const scene::Transform& xf) {
@@ -162,16 +120,16 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         ShapeData data;
         bool finite = transform_is_finite(world);
         if (world.is_identity()) {
-            make_shape(object.shape, accelerate, data);
+            prepare_shape(object.shape, accelerate, data);
         } else if (!finite || !bake_transform(object.shape, world, data)) {
-            make_shape(object.shape, accelerate, data);
+            prepare_shape(object.shape, accelerate, data);
             node.identity = false;
             node.xf = uint32_t(store.transforms.size());
             store.transforms.push_back(world);
         }
-        node.min_depth = min_depth_of(data);
-        Aabb surface, solid;
-        shape_boxes(data, surface, solid);
+        node.min_depth = min_depth_of(object.shape);
+        // Object-space boxes: where the shape can be hit, and where it can be inside.
+        Aabb surface = shape_bounds(data), solid = shape_solid_bounds(data);
         if (!finite) surface = solid = Aabb{};  // singular transform: never hit
         if (!node.identity) {
             surface = transformed(surface, world);

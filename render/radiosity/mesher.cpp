@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <type_traits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -227,6 +228,45 @@ void mesh_polygon(const scene::Polygon& poly, Builder& b) {
     }
 }
 
+void mesh_faces(const scene::Mesh& m, Builder& b) {
+    const int n = int(m.vertices.size());
+    for (const auto& f : m.faces) {
+        if (f.v[0] < 0 || f.v[1] < 0 || f.v[2] < 0 || f.v[0] >= n || f.v[1] >= n || f.v[2] >= n)
+            continue;
+        b.polygon({m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]});
+    }
+}
+
+// What the mesher answers for a shape that gets no patches.
+struct NotMeshed {};
+
+// One case per scene shape and no catch-all: a listed shape (scene/shape_list.hpp) must be
+// meshed here or declared NotMeshed.
+struct ShapeMesher {
+    const scene::Object& o;
+    const MeshOptions& opt;
+    Builder& b;
+    void operator()(const scene::Sphere& s) const { mesh_sphere(s, b); }
+    void operator()(const scene::Plane& s) const { mesh_plane(o, s, opt, b); }
+    void operator()(const scene::Box& s) const { mesh_box(s, b); }
+    void operator()(const scene::Cylinder& s) const {
+        mesh_cone(s.base, s.radius, s.cap, s.radius, s.open, b);
+    }
+    void operator()(const scene::Cone& s) const {
+        mesh_cone(s.base, s.base_radius, s.cap, s.cap_radius, s.open, b);
+    }
+    void operator()(const scene::Torus& s) const { mesh_torus(s, b); }
+    void operator()(const scene::Disc& s) const {
+        mesh_disc_at(s.center, s.normal, s.radius, s.hole, b);
+    }
+    void operator()(const scene::Triangle& s) const { b.polygon({s.p[0], s.p[1], s.p[2]}); }
+    void operator()(const scene::Polygon& s) const { mesh_polygon(s, b); }
+    void operator()(const scene::Mesh& s) const { mesh_faces(s, b); }
+    // Unions are meshed through by the caller; other CSG only occludes.
+    NotMeshed operator()(const scene::Csg&) const { return {}; }
+    NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }
+};
+
 }  // namespace
 
 std::vector<std::array<size_t, 3>> triangulate(const std::vector<glm::dvec3>& loop) {
@@ -270,33 +310,17 @@ std::vector<std::array<size_t, 3>> triangulate(const std::vector<glm::dvec3>& lo
 }
 
 bool meshable(const scene::Object& o) {
-    return !std::holds_alternative<scene::Csg>(o.shape) &&
-           !std::holds_alternative<scene::UnsupportedShape>(o.shape);
+    return std::visit(
+        [](const auto& s) {
+            return !std::is_same_v<std::invoke_result_t<ShapeMesher, decltype(s)>, NotMeshed>;
+        },
+        o.shape);
 }
 
 std::vector<Patch> mesh_object(const scene::Object& o, const MeshOptions& opt,
                                const SurfaceProps& props) {
     Builder b(o, opt, props);
-    std::visit([&](const auto& s) {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<T, scene::Box>) mesh_box(s, b);
-        else if constexpr (std::is_same_v<T, scene::Sphere>) mesh_sphere(s, b);
-        else if constexpr (std::is_same_v<T, scene::Plane>) mesh_plane(o, s, opt, b);
-        else if constexpr (std::is_same_v<T, scene::Triangle>) b.polygon({s.p[0], s.p[1], s.p[2]});
-        else if constexpr (std::is_same_v<T, scene::Polygon>) mesh_polygon(s, b);
-        else if constexpr (std::is_same_v<T, scene::Mesh>) {
-            for (const auto& f : s.faces) {
-                const int n = int(s.vertices.size());
-                if (f.v[0] < 0 || f.v[1] < 0 || f.v[2] < 0 || f.v[0] >= n || f.v[1] >= n ||
-                    f.v[2] >= n)
-                    continue;
-                b.polygon({s.vertices[f.v[0]], s.vertices[f.v[1]], s.vertices[f.v[2]]});
-            }
-        } else if constexpr (std::is_same_v<T, scene::Disc>) mesh_disc_at(s.center, s.normal, s.radius, s.hole, b);
-        else if constexpr (std::is_same_v<T, scene::Cylinder>) mesh_cone(s.base, s.radius, s.cap, s.radius, s.open, b);
-        else if constexpr (std::is_same_v<T, scene::Cone>) mesh_cone(s.base, s.base_radius, s.cap, s.cap_radius, s.open, b);
-        else if constexpr (std::is_same_v<T, scene::Torus>) mesh_torus(s, b);
-    }, o.shape);
+    std::visit<void>(ShapeMesher{o, opt, b}, o.shape);  // a NotMeshed answer adds nothing
     return std::move(b.out);
 }
 

@@ -6,7 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/polynomial.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/torus.hpp"
 
 namespace lumen::render {
 

@@ -3,7 +3,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/shapes.hpp"
+#include "render/shapes/disc.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -34,6 +35,15 @@ Aabb bounds(const DiscShape& s) {
     glm::dvec3 spread = glm::sqrt(glm::max(glm::dvec3(0), 1.0 - s.normal * s.normal));
     double radius = std::sqrt(s.radius2);
     return {s.centre - spread * radius, s.centre + spread * radius};
+}
+
+// A similarity keeps a disc a disc.
+bool ShapeTraits<scene::Disc>::bake(const scene::Disc& d, const scene::Transform& xf,
+                                    DiscShape& out) {
+    const double k = similarity_scale(xf);
+    if (!(k > 0)) return false;
+    out = make_disc({xf.point(d.center), xf.normal(d.normal), d.radius * k, d.hole * k});
+    return true;
 }
 
 }  // namespace lumen::render

@@ -5,7 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include "render/polynomial.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/cone.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -38,8 +39,8 @@ ConeShape make_axis_shape(glm::dvec3 base, glm::dvec3 cap, double r0, double r1,
 
 }  // namespace
 
-ConeShape make_cylinder(const scene::Cylinder& c) {
-    return make_axis_shape(c.base, c.cap, c.radius, c.radius, c.open);
+CylinderShape make_cylinder(const scene::Cylinder& c) {
+    return {make_axis_shape(c.base, c.cap, c.radius, c.radius, c.open)};
 }
 
 ConeShape make_cone(const scene::Cone& c) {
@@ -108,6 +109,24 @@ Aabb bounds(const ConeShape& s) {
     box.expand(cap - spread * s.r1);
     box.expand(cap + spread * s.r1);
     return box;
+}
+
+// A similarity keeps cylinders and cones round.
+bool ShapeTraits<scene::Cylinder>::bake(const scene::Cylinder& c, const scene::Transform& xf,
+                                        CylinderShape& out) {
+    const double k = similarity_scale(xf);
+    if (!(k > 0)) return false;
+    out = make_cylinder({xf.point(c.base), xf.point(c.cap), c.radius * k, c.open});
+    return true;
+}
+
+bool ShapeTraits<scene::Cone>::bake(const scene::Cone& c, const scene::Transform& xf,
+                                    ConeShape& out) {
+    const double k = similarity_scale(xf);
+    if (!(k > 0)) return false;
+    out = make_cone({xf.point(c.base), c.base_radius * k, xf.point(c.cap), c.cap_radius * k,
+                     c.open});
+    return true;
 }
 
 }  // namespace lumen::render

@@ -12,34 +12,13 @@ namespace {
 
 using namespace testing;
 
-bool hit_shape(const ShapeData& d, const LocalRay& r, ShapeHit& h) {
-    return std::visit(
-        [&](const auto& s) -> bool {
-            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, std::unique_ptr<MeshShape>>)
-                return false;
-            else
-                return intersect(s, r, 1e-6, 1e30, h);
-        },
-        d);
-}
-
-ShapeData object_space(const scene::Shape& s) {
-    if (auto* p = std::get_if<scene::Sphere>(&s)) return make_sphere(*p);
-    if (auto* p = std::get_if<scene::Plane>(&s)) return make_plane(*p);
-    if (auto* p = std::get_if<scene::Box>(&s)) return make_box(*p);
-    if (auto* p = std::get_if<scene::Cylinder>(&s)) return make_cylinder(*p);
-    if (auto* p = std::get_if<scene::Cone>(&s)) return make_cone(*p);
-    if (auto* p = std::get_if<scene::Disc>(&s)) return make_disc(*p);
-    if (auto* p = std::get_if<scene::Triangle>(&s)) return make_triangle(*p);
-    return make_polygon(std::get<scene::Polygon>(s));
-}
-
 // Traces random rays at both versions; where both hit, t and the normal must agree.
 void expect_same(const scene::Shape& shape, const scene::Transform& xf, const char* what,
                  double normal_tol = 1e-9) {
     ShapeData baked;
     ASSERT_TRUE(bake_transform(shape, xf, baked)) << what;
-    ShapeData local = object_space(shape);
+    ShapeData local;
+    ASSERT_TRUE(prepare_shape(shape, true, local)) << what;
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1, 1);
     int both = 0, differ = 0;
@@ -48,8 +27,8 @@ void expect_same(const scene::Shape& shape, const scene::Transform& xf, const ch
         glm::dvec3 origin = target + 6.0 * glm::normalize(glm::dvec3{u(rng), u(rng), u(rng)});
         Ray r = ray(origin, target - origin);
         ShapeHit hw, hl;
-        bool a = hit_shape(baked, {r.origin, r.dir}, hw);
-        bool b = hit_shape(local, {xf.inv_point(r.origin), xf.inv_vector(r.dir)}, hl);
+        bool a = shape_intersect(baked, {r.origin, r.dir}, 1e-6, 1e30, hw);
+        bool b = shape_intersect(local, {xf.inv_point(r.origin), xf.inv_vector(r.dir)}, 1e-6, 1e30, hl);
         if (a != b) { ++differ; continue; }  // grazing rays may round either way
         if (!a) continue;
         ++both;

@@ -2,8 +2,10 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
-#include "render/shapes.hpp"
+#include "render/shapes/triangle.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -67,6 +69,20 @@ Aabb bounds(const TriangleShape& s) {
     box.expand(s.core.p0 + s.core.e1);
     box.expand(s.core.p0 + s.core.e2);
     return box;
+}
+
+// Any affine map keeps a triangle a triangle.
+bool ShapeTraits<scene::Triangle>::bake(const scene::Triangle& t, const scene::Transform& xf,
+                                        TriangleShape& out) {
+    scene::Triangle w = t;
+    for (int i = 0; i < 3; ++i) {
+        w.p[i] = xf.point(t.p[i]);
+        w.n[i] = xf.normal(t.n[i]);
+    }
+    out = make_triangle(w);
+    // Keep the side the object-space normal gave.
+    if (glm::determinant(linear_part(xf)) < 0) out.normal = -out.normal;
+    return true;
 }
 
 }  // namespace lumen::render

@@ -5,7 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include "render/polynomial.hpp"
-#include "render/shapes.hpp"
+#include "render/shapes/sphere.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 namespace {
@@ -50,6 +51,15 @@ bool inside(const SphereShape& s, const glm::dvec3& p) {
 Aabb bounds(const SphereShape& s) {
     if (!s.valid) return {};
     return {s.centre - s.radius, s.centre + s.radius};
+}
+
+// A similarity keeps a sphere a sphere.
+bool ShapeTraits<scene::Sphere>::bake(const scene::Sphere& s, const scene::Transform& xf,
+                                      SphereShape& out) {
+    const double k = similarity_scale(xf);
+    if (!(k > 0)) return false;
+    out = make_sphere({xf.point(s.center), s.radius * k});
+    return true;
 }
 
 }  // namespace lumen::render

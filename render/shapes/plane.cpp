@@ -3,7 +3,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/shapes.hpp"
+#include "render/shapes/plane.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -32,5 +33,15 @@ bool inside(const PlaneShape& s, const glm::dvec3& p) {
 }
 
 Aabb bounds(const PlaneShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
+
+// Any affine map keeps a plane a plane.
+bool ShapeTraits<scene::Plane>::bake(const scene::Plane& p, const scene::Transform& xf,
+                                     PlaneShape& out) {
+    PlaneShape local = make_plane(p);
+    if (!local.valid) return false;
+    glm::dvec3 n = glm::normalize(xf.normal(local.normal));
+    out = make_plane({n, glm::dot(n, xf.point(local.normal * local.distance))});
+    return true;
+}
 
 }  // namespace lumen::render

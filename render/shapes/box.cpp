@@ -2,7 +2,10 @@
 // that gave the entry or exit.
 #include <cmath>
 
-#include "render/shapes.hpp"
+#include <glm/common.hpp>
+
+#include "render/shapes/box.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -44,5 +47,14 @@ bool inside(const BoxShape& s, const glm::dvec3& p) {
 }
 
 Aabb bounds(const BoxShape& s) { return s.valid ? s.box : Aabb{}; }
+
+// Only an axis scaling (and translation) keeps a box axis-aligned.
+bool ShapeTraits<scene::Box>::bake(const scene::Box& b, const scene::Transform& xf,
+                                   BoxShape& out) {
+    if (!is_axis_scaling(linear_part(xf))) return false;
+    glm::dvec3 a = xf.point(b.min), c = xf.point(b.max);
+    out = make_box({glm::min(a, c), glm::max(a, c)});
+    return true;
+}
 
 }  // namespace lumen::render

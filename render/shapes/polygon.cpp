@@ -4,7 +4,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/shapes.hpp"
+#include "render/shapes/polygon.hpp"
+#include "render/shapes/linear_maps.hpp"
 
 namespace lumen::render {
 
@@ -94,5 +95,20 @@ bool intersect(const PolygonShape& s, const LocalRay& r, double tmin, double tma
 }
 
 Aabb bounds(const PolygonShape& s) { return s.valid ? s.box : Aabb{}; }
+
+// Any affine map keeps a polygon a polygon.
+bool ShapeTraits<scene::Polygon>::bake(const scene::Polygon& poly, const scene::Transform& xf,
+                                       PolygonShape& out) {
+    scene::Polygon w;
+    for (const glm::dvec3& p : poly.points) w.points.push_back(xf.point(p));
+    out = make_polygon(w);
+    // Newell's normal follows the winding, which a mirror reverses relative to ours.
+    PolygonShape local = make_polygon(poly);
+    if (out.valid && local.valid && glm::dot(out.normal, xf.normal(local.normal)) < 0) {
+        out.normal = -out.normal;
+        out.distance = -out.distance;
+    }
+    return true;
+}
 
 }  // namespace lumen::render

@@ -5,7 +5,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "render/shapes.hpp"
+#include "render/shapes/mesh.hpp"
 
 namespace lumen::render {
 

@@ -1,0 +1,49 @@
+// mesh / mesh2: triangles in a per-mesh BVH, held by pointer (the BVH is large).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "render/bvh.hpp"
+#include "render/shapes/triangle.hpp"
+
+namespace lumen::render {
+
+struct MeshShape {
+    const scene::Mesh* mesh = nullptr;
+    std::vector<TriangleCore> tris;    // in BVH order
+    std::vector<uint32_t> face;        // source face of each entry of tris
+    Bvh bvh;                           // empty when built without acceleration
+    Aabb box;
+    bool valid = true;
+};
+// `accelerate` = false skips the BVH (a one-off inside test); queries then scan every face.
+std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate = true);
+bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
+bool inside(const MeshShape& s, const glm::dvec3& p);
+Aabb bounds(const MeshShape& s);
+
+// The prepared form is the pointer: these forward to the mesh.
+using MeshPtr = std::unique_ptr<MeshShape>;
+inline bool intersect(const MeshPtr& s, const LocalRay& r, double tmin, double tmax,
+                      ShapeHit& h) {
+    return intersect(*s, r, tmin, tmax, h);
+}
+inline bool inside(const MeshPtr& s, const glm::dvec3& p) { return inside(*s, p); }
+inline Aabb bounds(const MeshPtr& s) { return bounds(*s); }
+// Only a mesh with an inside_vector has an inside.
+inline Aabb solid_bounds(const MeshPtr& s) {
+    return s->mesh->inside_vector ? bounds(*s) : Aabb{};
+}
+
+template <> struct ShapeTraits<scene::Mesh> {
+    using Prepared = MeshPtr;
+    static constexpr double min_depth = kDepthDefault;
+    static Prepared prepare(const scene::Mesh& m, bool accelerate) {
+        return make_mesh(m, accelerate);
+    }
+    // Not baked: traced in object space under its transform.
+    static bool bake(const scene::Mesh&, const scene::Transform&, Prepared&) { return false; }
+};
+
+}  // namespace lumen::render

@@ -1,0 +1,74 @@
+// What every primitive of scene/shape_list.hpp must provide to the renderer, one file pair
+// per shape in render/shapes/. A shape is hit by an object-space ray (origin o, direction d,
+// d NOT unit length: it is the world unit direction through the inverse transform), so the
+// parameter t is the same as the world distance. Degenerate input gives a shape that is never
+// hit.
+#pragma once
+#include <concepts>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/bounds.hpp"
+#include "scene/object.hpp"
+
+namespace lumen::render {
+
+struct LocalRay {
+    glm::dvec3 o, d;
+    glm::dvec3 at(double t) const { return o + t * d; }
+};
+
+// What a shape reports; the normal is in object space, outward, not necessarily unit length.
+struct ShapeHit {
+    double t = 0;
+    glm::dvec3 normal{0, 1, 0};
+    glm::dvec2 uv{0};
+    const scene::LayeredTexture* texture = nullptr;  // per-face mesh texture, if any
+};
+
+// Minimum depths of POV-Ray's objects: hits closer to the ray origin than this are ignored
+// (POV-Ray's per-object DEPTH_TOLERANCE values).
+constexpr double kDepthDefault = 1e-6;  // sphere, plane, box, disc, triangle, mesh, ...
+constexpr double kDepthTorus = 1e-4;
+constexpr double kDepthPolygon = 1e-8;
+
+// The render side of scene shape T. Only the specialisations exist, one in each shape's
+// header, each with:
+//   using Prepared = ...;                  the shape ready for intersection (a ShapeData type)
+//   static constexpr double min_depth;     POV-Ray's minimum hit distance for the object
+//   static Prepared prepare(const T&, bool accelerate);
+//   static bool bake(const T&, const scene::Transform& xf, Prepared& out);
+//       the same shape in world space, or false: xf stays a per-ray transform
+template <class T> struct ShapeTraits;
+
+// The common case: the prepared shape made by `make` from the scene shape alone.
+template <class T, class P, P (*make)(const T&), double depth = kDepthDefault>
+struct PreparedBy {
+    using Prepared = P;
+    static constexpr double min_depth = depth;
+    static P prepare(const T& shape, bool) { return make(shape); }
+};
+
+// Free functions every prepared shape has (found by argument-dependent lookup). A shape with
+// no inside (disc, triangle, polygon) says so with inside() false and an empty solid box.
+template <class S>
+concept PreparedShape = requires(const S& s, const LocalRay& r, double t, ShapeHit& h,
+                                 const glm::dvec3& p) {
+    { intersect(s, r, t, t, h) } -> std::same_as<bool>;
+    { inside(s, p) } -> std::same_as<bool>;
+    { bounds(s) } -> std::same_as<Aabb>;        // where a hit can be
+    { solid_bounds(s) } -> std::same_as<Aabb>;  // where a point can be inside
+};
+
+template <class T>
+concept RegisteredShape =
+    requires(const T& shape, bool accelerate, const scene::Transform& xf,
+             typename ShapeTraits<T>::Prepared& out) {
+        { ShapeTraits<T>::min_depth } -> std::convertible_to<double>;
+        { ShapeTraits<T>::prepare(shape, accelerate) }
+            -> std::same_as<typename ShapeTraits<T>::Prepared>;
+        { ShapeTraits<T>::bake(shape, xf, out) } -> std::same_as<bool>;
+    } && PreparedShape<typename ShapeTraits<T>::Prepared>;
+
+}  // namespace lumen::render

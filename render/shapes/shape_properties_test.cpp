@@ -1,0 +1,261 @@
+// Properties every shape of scene/shape_list.hpp must have, checked with random rays on a
+// sample instance under several transforms (identity, similarity, mirror, shear). A listed
+// shape without a sample_shape overload here does not compile.
+#include <cmath>
+#include <optional>
+#include <random>
+#include <type_traits>
+
+#include <gtest/gtest.h>
+
+#include "render/geometry_test_util.hpp"
+#include "render/node.hpp"
+
+namespace lumen::render {
+namespace {
+
+using namespace testing;
+
+// ---- one sample per listed shape ----------------------------------------------------------
+
+scene::Sphere sample_shape(std::type_identity<scene::Sphere>) { return {{0.2, 0.1, 0}, 0.8}; }
+scene::Plane sample_shape(std::type_identity<scene::Plane>) {
+    return {glm::normalize(glm::dvec3{0.3, 1, 0.2}), 0.4};
+}
+scene::Box sample_shape(std::type_identity<scene::Box>) { return {{-1, -0.5, -0.2}, {0.7, 1, 1}}; }
+scene::Cylinder sample_shape(std::type_identity<scene::Cylinder>) {
+    return {{0, -1, 0}, {0.3, 1, 0.2}, 0.5, false};
+}
+scene::Cone sample_shape(std::type_identity<scene::Cone>) {
+    return {{0, -1, 0}, 0.8, {0, 1, 0.3}, 0.2, false};
+}
+scene::Torus sample_shape(std::type_identity<scene::Torus>) { return {1, 0.3, false}; }
+scene::Disc sample_shape(std::type_identity<scene::Disc>) {
+    return {{0, 0, 0}, glm::normalize(glm::dvec3{0.2, 1, 0}), 1, 0.3};
+}
+scene::Triangle sample_shape(std::type_identity<scene::Triangle>) {
+    return {{glm::dvec3{-1, -1, 0}, {1, -0.5, 0.2}, {0, 1, -0.1}}, {}, false};
+}
+scene::Polygon sample_shape(std::type_identity<scene::Polygon>) {  // a square with a hole
+    scene::Polygon p;
+    p.points = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0},
+                {-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0, 0.5, 0}, {-0.5, -0.5, 0}};
+    return p;
+}
+scene::Mesh sample_shape(std::type_identity<scene::Mesh>) {  // a closed octahedron, wound outward
+    scene::Mesh m;
+    m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int x : {0, 1})
+        for (int y : {2, 3})
+            for (int z : {4, 5}) {
+                bool outward = ((x == 0) == (y == 2)) == (z == 4);  // parity of the octant's signs
+                m.faces.push_back({outward ? std::array{x, y, z} : std::array{x, z, y}});
+            }
+    m.inside_vector = glm::dvec3{0.3, 0.5, 0.7};
+    return m;
+}
+
+// ---- an instance compiled the way the renderer compiles it --------------------------------
+
+struct WorldHit {
+    double t;
+    glm::dvec3 point, normal;  // normal not normalised
+};
+
+struct Instance {
+    std::unique_ptr<scene::Object> object;  // the store points into it
+    NodeStore store;
+    uint32_t root = 0;
+    Aabb region;  // where the random rays aim
+
+    const Node& node() const { return store.nodes[root]; }
+    std::optional<WorldHit> hit(const Ray& r, double tmin) const {
+        NodeHit h;
+        if (!intersect_node(store, root, r, tmin, Aabb::inf, false, h)) return std::nullopt;
+        const Node& leaf = store.nodes[h.leaf];
+        glm::dvec3 n = leaf.identity ? h.shape.normal
+                                     : store.transforms[leaf.xf].normal(h.shape.normal);
+        return WorldHit{h.shape.t, r.at(h.shape.t), leaf.flip ? -n : n};
+    }
+    bool inside(const glm::dvec3& p) const { return inside_node(store, root, p); }
+};
+
+// The part of a shape's world box the random rays aim at: within reach of the sample even
+// where the box is infinite (planes).
+Aabb aim_region(const Aabb& world_box, const scene::Transform& xf) {
+    return intersect(world_box, transformed({glm::dvec3(-2), glm::dvec3(2)}, xf));
+}
+
+Instance instance(const scene::Shape& shape, const scene::Transform& xf) {
+    Instance in;
+    in.object = std::make_unique<scene::Object>();
+    in.object->shape = shape;
+    in.object->transform = xf;
+    in.root = compile_object(in.store, *in.object, NodeContext{});
+    in.region = aim_region(in.node().surface, xf);
+    return in;
+}
+
+struct Placement {
+    const char* name;
+    scene::Transform xf;
+};
+
+std::vector<Placement> placements() {
+    return {{"identity", {}},
+            {"similarity",
+             scale({1.7, 1.7, 1.7}).then(rotate(37, {1, 2, 3})).then(translate({3, -2, 5}))},
+            {"mirror", scale({-2, 2, 2}).then(rotate(20, {0, 1, 0})).then(translate({1, 1, 1}))},
+            {"shear", from_matrix(glm::dmat4(1, 0.3, 0, 0, 0.2, 1.5, 0.1, 0, 0, 0, -0.8, 0, 1, 2, 3,
+                                             1))}};
+}
+
+// Rays from a sphere around the region towards random points in it.
+class RandomRays {
+public:
+    explicit RandomRays(const Aabb& region, unsigned seed = 7) : box_(region), rng_(seed) {}
+    Ray next() {
+        glm::dvec3 target = box_.lo + glm::dvec3(u01(), u01(), u01()) * (box_.hi - box_.lo);
+        double reach = glm::length(box_.hi - box_.lo) + 1;
+        glm::dvec3 origin = box_.centre() + reach * direction();
+        return ray(origin, target - origin);
+    }
+    glm::dvec3 point() { return box_.lo + glm::dvec3(u01(), u01(), u01()) * (box_.hi - box_.lo); }
+    glm::dvec3 direction() {
+        glm::dvec3 d;
+        do d = glm::dvec3(u01(), u01(), u01()) * 2.0 - 1.0;
+        while (glm::dot(d, d) > 1 || glm::dot(d, d) < 1e-4);
+        return glm::normalize(d);
+    }
+
+private:
+    double u01() { return std::uniform_real_distribution<double>(0, 1)(rng_); }
+    Aabb box_;
+    std::mt19937 rng_;
+};
+
+constexpr int kRays = 400;
+
+template <class T> class ShapeProperties : public ::testing::Test {
+protected:
+    scene::Shape sample() const { return sample_shape(std::type_identity<T>{}); }
+    bool sample_is_bounded_solid() const {
+        const Aabb solid = instance(sample(), {}).node().solid;
+        return !solid.empty() && solid.finite();
+    }
+
+    // Calls check(instance, ray, hit) for every hit of kRays random rays, per placement.
+    template <class Check> void for_each_hit(const Check& check) const {
+        for (const Placement& p : placements()) {
+            SCOPED_TRACE(p.name);
+            Instance in = instance(sample(), p.xf);
+            RandomRays rays(in.region);
+            int hits = 0;
+            for (int i = 0; i < kRays; ++i) {
+                Ray r = rays.next();
+                if (auto h = in.hit(r, 0)) {
+                    ++hits;
+                    check(in, r, *h);
+                }
+            }
+            EXPECT_GT(hits, kRays / 10);
+        }
+    }
+};
+
+using Listed = scene::PrimitiveShapes::apply<::testing::Types>;
+TYPED_TEST_SUITE(ShapeProperties, Listed);
+
+TYPED_TEST(ShapeProperties, HitsLieOnTheSurfaceInsideTheBounds) {
+    this->for_each_hit([](const Instance& in, const Ray& r, const WorldHit& h) {
+        EXPECT_TRUE(in.node().surface.contains(h.point)) << "t " << h.t;
+        // Starting again just before the hit finds it again, just ahead.
+        const double back = 1e-3;
+        auto again = in.hit({h.point - back * r.dir, r.dir}, 0);
+        ASSERT_TRUE(again) << "t " << h.t;
+        EXPECT_NEAR(again->t, back, 1e-7);
+    });
+}
+
+TYPED_TEST(ShapeProperties, NormalsAreUnitAndFaceOutward) {
+    this->for_each_hit([](const Instance& in, const Ray&, const WorldHit& h) {
+        const double len = glm::length(h.normal);
+        ASSERT_TRUE(std::isfinite(len) && len > 0);
+        const glm::dvec3 n = h.normal / len;
+        EXPECT_NEAR(glm::length(n), 1, 1e-12);
+        // Perpendicular to the surface: from a step out along it, straight back hits it there.
+        const double step = 1e-3;
+        auto back = in.hit({h.point + step * n, -n}, 0);
+        ASSERT_TRUE(back);
+        EXPECT_NEAR(back->t, step, 1e-7);
+        if (in.node().solid.empty()) return;  // no inside: either side is right
+        const double near = 1e-6 * (1 + glm::length(h.point));
+        EXPECT_FALSE(in.inside(h.point + near * n)) << "normal points inward";
+        EXPECT_TRUE(in.inside(h.point - near * n)) << "normal points inward";
+    });
+}
+
+TYPED_TEST(ShapeProperties, InsideAgreesWithRayParity) {
+    if (!this->sample_is_bounded_solid()) GTEST_SKIP() << "no bounded inside";
+    for (const Placement& p : placements()) {
+        SCOPED_TRACE(p.name);
+        Instance in = instance(this->sample(), p.xf);
+        RandomRays rays(in.region, 3);
+        int tested = 0, inside = 0;
+        for (int i = 0; i < kRays; ++i) {
+            const Ray r{rays.point(), rays.direction()};
+            int crossings = 0;
+            double from = 0;
+            bool near_surface = false;
+            while (crossings < 64) {
+                auto h = in.hit(r, from);
+                if (!h) break;
+                if (crossings == 0 && h->t < 1e-4) near_surface = true;
+                ++crossings;
+                from = h->t + 1e-7 * (1 + h->t);
+            }
+            if (near_surface) continue;
+            ++tested;
+            inside += in.inside(r.origin);
+            EXPECT_EQ(in.inside(r.origin), crossings % 2 == 1) << "point " << i;
+        }
+        EXPECT_GT(tested, kRays / 2);
+        EXPECT_GT(inside, 0);
+    }
+}
+
+TYPED_TEST(ShapeProperties, BakedFormTracesLikeThePerRayTransform) {
+    int baked_placements = 0;
+    for (const Placement& p : placements()) {
+        SCOPED_TRACE(p.name);
+        const scene::Shape shape = this->sample();
+        ShapeData baked, local;
+        if (!bake_transform(shape, p.xf, baked)) continue;
+        ++baked_placements;
+        ASSERT_TRUE(prepare_shape(shape, true, local));
+        RandomRays rays(aim_region(shape_bounds(baked), p.xf));
+        int both = 0, differ = 0;
+        for (int i = 0; i < kRays; ++i) {
+            const Ray r = rays.next();
+            ShapeHit hw, hl;
+            bool a = shape_intersect(baked, {r.origin, r.dir}, 1e-6, 1e30, hw);
+            bool b = shape_intersect(local, {p.xf.inv_point(r.origin), p.xf.inv_vector(r.dir)},
+                                     1e-6, 1e30, hl);
+            if (a != b) {
+                ++differ;  // grazing rays may round either way
+                continue;
+            }
+            if (!a) continue;
+            ++both;
+            EXPECT_NEAR(hw.t, hl.t, 1e-9 * (1 + hl.t)) << "ray " << i;
+            glm::dvec3 nl = glm::normalize(p.xf.normal(hl.normal)), nw = glm::normalize(hw.normal);
+            EXPECT_NEAR(glm::dot(nl, nw), 1, 1e-9) << "ray " << i;
+        }
+        EXPECT_GT(both, kRays / 10);
+        EXPECT_LE(differ, 2);
+    }
+    if (baked_placements == 0) GTEST_SKIP() << "never baked: traced in object space";
+}
+
+}  // namespace
+}  // namespace lumen::render
