@@ -1,5 +1,5 @@
 // Library-level speed/accuracy sweep of the classical radiosity module on POV-Ray's
-// radiosity/cornell.pov geometry (radiosity-notes.md §6.3): mesh size x form-factor method x
+// radiosity/cornell.pov geometry: mesh size x form-factor method x
 // solver, each timed and compared with a fine-mesh reference solution. Prints CSV.
 //
 // The scene file is parsed unchanged; its triangles become patches through the mesher and

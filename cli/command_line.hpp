@@ -1,4 +1,4 @@
-// `lumen scene.pov [options] [file.ini ...]`: classifies each argument (§11.1) and handles the
+// `lumen scene.pov [options] [file.ini ...]`: classifies each argument and handles the
 // lumen-only long options (--help, --version, --dump-scene, --check, --threads N).
 #pragma once
 #include <string>

@@ -9,7 +9,7 @@ namespace lumen::cli {
 namespace {
 
 // POV hands numbers to the scene through 32-bit floats; the derived identifiers are also
-// printed with 6 significant digits on the way (clock_delta = 0.333333, §11.2).
+// printed with 6 significant digits on the way (clock_delta = 0.333333).
 double through_float(double v) { return double(float(v)); }
 double through_text(double v) {
     char buf[32];

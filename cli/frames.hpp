@@ -1,4 +1,4 @@
-// Animation frames (povray-semantics.md §11.2): which frames to render, each frame's clock and
+// Animation frames (POV-Ray 3.7's rules): which frames to render, each frame's clock and
 // scene identifiers, and the output file name (numbered in animations).
 #pragma once
 #include <string>

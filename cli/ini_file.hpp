@@ -1,4 +1,4 @@
-// INI files (povray-semantics.md §11.3): Key=Value lines, switch lines, file names, comments,
+// INI files (POV-Ray 3.7's rules): Key=Value lines, switch lines, file names, comments,
 // [Section] headers, and "file.ini[Section]" to select a section.
 #pragma once
 #include <string>

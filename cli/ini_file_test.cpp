@@ -1,4 +1,4 @@
-// INI files: sections, comments, switch lines, nesting (povray-semantics.md §11.3).
+// INI files: sections, comments, switch lines, nesting (POV-Ray 3.7's rules).
 #include <gtest/gtest.h>
 
 #include <filesystem>

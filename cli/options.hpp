@@ -1,4 +1,4 @@
-// Everything the command line and INI files can set (povray-semantics.md §11). Switches are
+// Everything the command line and INI files can set (POV-Ray 3.7's rules). Switches are
 // translated to INI keys, so every setting has exactly one parser: apply_ini_option.
 #pragma once
 #include <optional>
@@ -26,7 +26,7 @@ struct Options {
     // Partial render exactly as given: a fraction or a 1-based index (resolved by pixel_range).
     std::optional<double> start_row, end_row, start_col, end_col;
 
-    // Animation (§11.2). The clock is only used when no frame range is given.
+    // Animation. The clock is only used when no frame range is given.
     double clock = 0.0;
     int initial_frame = 1, final_frame = 1;
     double initial_clock = 0.0, final_clock = 1.0;
@@ -42,7 +42,7 @@ struct Options {
     std::vector<std::string> notes;
 };
 
-// Resolves a Start_/End_ value against the image extent `size` (§11.2): 0 <= v < 1 (start) or
+// Resolves a Start_/End_ value against the image extent `size`: 0 <= v < 1 (start) or
 // 0 <= v <= 1 (end) is a fraction, otherwise a 1-based index. Returns a 0-based pixel index,
 // clamped to the image.
 int resolve_start(std::optional<double> v, int size);

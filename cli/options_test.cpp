@@ -1,4 +1,4 @@
-// Command-line switches and INI options (povray-semantics.md §11).
+// Command-line switches and INI options (POV-Ray 3.7's rules).
 #include <gtest/gtest.h>
 
 #include "cli/command_line.hpp"

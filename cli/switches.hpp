@@ -1,4 +1,4 @@
-// POV-Ray style switches: +X[param] turns X on (or sets it), -X turns it off (§11.1).
+// POV-Ray style switches: +X[param] turns X on (or sets it), -X turns it off.
 #pragma once
 #include <string>
 

@@ -1,4 +1,4 @@
-// background, fog and sky_sphere (povray-semantics.md §7.4).
+// background, fog and sky_sphere (POV-Ray 3.7's rules).
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {

@@ -1,4 +1,4 @@
-// camera { } with POV's fix-up order (povray-semantics.md §1.2), so the renderer only maps
+// camera { } with POV's fix-up order, so the renderer only maps
 // pixels to rays.
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// Camera fix-ups (povray-semantics.md §1.2) and light sources (§6).
+// Camera fix-ups and light sources, as POV-Ray 3.7 applies them.
 #include <cmath>
 
 #include <glm/geometric.hpp>

@@ -21,7 +21,7 @@ bool read_transform(ItemCursor& cur, const Item& kw, scene::Transform& out);
 const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
-// Patterns move with everything written after them (povray-semantics.md §9.1).
+// Patterns move with everything written after them (POV-Ray 3.7's rules).
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);

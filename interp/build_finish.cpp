@@ -1,4 +1,4 @@
-// finish { } per povray-semantics.md §3.1 (defaults are scene::Finish's).
+// finish { } as POV-Ray 3.7 reads it (defaults are scene::Finish's).
 #include <cmath>
 
 #include "interp/build_common.hpp"

@@ -1,4 +1,4 @@
-// light_source { <pos>, colour modifiers } (povray-semantics.md §6). Transforms are gathered
+// light_source { <pos>, colour modifiers } (POV-Ray 3.7's rules). Transforms are gathered
 // and applied at the end to the position, point_at, area axes and looks_like object.
 #include "interp/build_common.hpp"
 

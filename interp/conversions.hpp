@@ -35,7 +35,7 @@ double grey(const scene::Colour& c);
 std::string format_float(double f, int width, int precision);
 
 // Declare= values and the animation identifiers pass through a 32-bit float printed with six
-// significant digits (povray-semantics.md §11.2): 0.123456789 -> 0.123457.
+// significant digits (POV-Ray 3.7's rules): 0.123456789 -> 0.123457.
 double six_digits(double x);
 
 [[noreturn]] void type_error(const Value& v, const char* expected);

@@ -264,7 +264,7 @@ void Evaluator::fill_array(ArrayValue& arr, const ast::Node& init, size_t level,
     }
 }
 
-// Colour expressions: parts apply in written order (povray-semantics.md §4.1).
+// Colour expressions: parts apply in written order (POV-Ray 3.7's rules).
 Value Evaluator::colour(const ast::Node& e) {
     scene::Colour c{};
     for (const auto& part_ptr : e.children) {

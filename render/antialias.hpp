@@ -1,4 +1,4 @@
-// Rendering one block of pixels, with POV-Ray's anti-aliasing methods (povray-semantics.md §8):
+// Rendering one block of pixels, with POV-Ray's anti-aliasing methods:
 // none (one ray through each pixel centre), AM1 (non-recursive adaptive, block framed) and
 // AM2 (recursive adaptive over pixel corners), with POV's jitter (render/jitter.hpp). Blocks are
 // independent, so the image does not depend on the thread count or block order.

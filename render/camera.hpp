@@ -1,4 +1,4 @@
-// Pixel -> primary ray (povray-semantics.md §1.3). The scene camera arrives fixed up by the
+// Pixel -> primary ray (POV-Ray 3.7's rules). The scene camera arrives fixed up by the
 // interpreter (angle, look_at, orthographic scaling, transforms), so this is only the mapping.
 #pragma once
 #include "render/ray.hpp"

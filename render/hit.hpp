@@ -21,7 +21,7 @@ struct Hit {
     // interior_texture after the same inheritance (null = none): shades the back side.
     const scene::LayeredTexture* interior_texture = nullptr;
     // Interior after inheritance (null = default interior). Its identity also tells which
-    // "inside" the ray enters or leaves (the interior list of povray-semantics.md §5.1).
+    // "inside" the ray enters or leaves (POV-Ray's interior list).
     const scene::Interior* interior = nullptr;
     const void* interior_id = nullptr;  // stable identity of the interior owner (for lists)
     // Object flags after CSG inheritance: set when the primitive or any CSG ancestor has it

@@ -1,4 +1,4 @@
-// Output encoding (povray-semantics.md §2), then the file through image_files.hpp.
+// Output encoding (POV-Ray 3.7's rules), then the file through image_files.hpp.
 #include "render/image_output.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Encoding (gamma rules of povray-semantics.md §2) and writing image files (image_files.hpp).
+// Encoding (POV-Ray 3.7's gamma rules) and writing image files (image_files.hpp).
 #pragma once
 #include <memory>
 #include <string>

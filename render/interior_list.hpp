@@ -1,4 +1,4 @@
-// The list of interiors a ray is inside (povray-semantics.md §5.1), in a fixed array so that
+// The list of interiors a ray is inside (POV-Ray 3.7's rules), in a fixed array so that
 // spawning rays never allocates.
 #pragma once
 #include "scene/texture.hpp"

@@ -9,7 +9,7 @@
 namespace lumen::render {
 
 // A shadow ray ignores surfaces closer than this to where it starts or last crossed one
-// (POV's SHADOW_TOLERANCE, povray-semantics.md §3.5).
+// (POV's SHADOW_TOLERANCE).
 constexpr double kShadowTolerance = 1e-3;
 
 // Which objects a query sees.

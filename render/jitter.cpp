@@ -6,7 +6,7 @@
 namespace lumen::render {
 namespace {
 
-// H: a fixed permutation of 0..4095 built by the shuffle of §8.4.
+// H: a fixed permutation of 0..4095 built by POV-Ray's shuffle.
 std::array<int, 4096> make_permutation() {
     std::array<int, 4096> h{};
     for (int i = 0; i < 4096; ++i) h[i] = i;

@@ -1,4 +1,4 @@
-// POV-Ray's anti-aliasing jitter (povray-semantics.md §8.4): a deterministic hash of the
+// POV-Ray's anti-aliasing jitter: a deterministic hash of the
 // sample position picks one of 256 fixed offsets, so jittered renders are reproducible and
 // identical to POV-Ray's.
 #pragma once

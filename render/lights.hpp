@@ -1,4 +1,4 @@
-// Light sources prepared once per render (povray-semantics.md §6): direction, distance and
+// Light sources prepared once per render (POV-Ray 3.7's rules): direction, distance and
 // attenuation (spotlight cone, cylinder, fade) at a surface point, and area-light grids.
 #pragma once
 #include <memory>

@@ -1,4 +1,4 @@
-// Pattern evaluation and blend-map lookup (povray-semantics.md §4.2).
+// Pattern evaluation and blend-map lookup (POV-Ray 3.7's rules).
 #pragma once
 #include <glm/vec3.hpp>
 

@@ -1,4 +1,4 @@
-// Pigment evaluation: solid colours, colour maps, pigment maps and list forms (§4).
+// Pigment evaluation: solid colours, colour maps, pigment maps and list forms.
 #pragma once
 #include <glm/vec3.hpp>
 

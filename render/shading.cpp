@@ -20,7 +20,7 @@ bool is_black(const glm::dvec3& c) {
 
 double max_component(const glm::dvec3& c) { return std::max({c.x, c.y, c.z}); }
 
-// Sum of the recursive 4-corner averages over an area light's grid (§6.3).
+// Sum of the recursive 4-corner averages over an area light's grid.
 class AreaShadow {
 public:
     AreaShadow(const LightSource& l, const SurfaceSample& s, const LightSample& centre,

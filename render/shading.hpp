@@ -1,4 +1,4 @@
-// The finish model (povray-semantics.md §3.2–3.4): ambient, emission, diffuse, brilliance,
+// The finish model (POV-Ray 3.7's rules): ambient, emission, diffuse, brilliance,
 // phong, specular, metallic, and the reflectivity of a surface.
 #pragma once
 #include <vector>
@@ -51,7 +51,7 @@ glm::dvec3 irid_factor(const scene::Finish& finish, const glm::dvec3& wavelength
 glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
                        const InteriorList& interiors, ThreadState& state);
 
-// Reflectivity of a layer (§3.4): per-channel colour Rf and the factor by which the ray
+// Reflectivity of a layer: per-channel colour Rf and the factor by which the ray
 // weight is multiplied. `relative_ior` (n2/n1) is only used by fresnel.
 struct Reflectivity {
     glm::dvec3 colour{0};
@@ -61,7 +61,7 @@ struct Reflectivity {
 Reflectivity reflectivity(const scene::Finish& finish, double cos_incidence, double relative_ior,
                           const glm::dvec3& pigment);
 
-// Mirror direction of `dir` about the shading normal, kept above the raw surface (§3.4).
+// Mirror direction of `dir` about the shading normal, kept above the raw surface.
 glm::dvec3 reflect_direction(const glm::dvec3& dir, const glm::dvec3& shading_normal,
                              const glm::dvec3& raw_normal);
 

@@ -1,4 +1,4 @@
-// Unit checks of the finish model and light attenuation formulas (§3, §6).
+// Unit checks of the finish model and light attenuation formulas.
 #include <gtest/gtest.h>
 
 #include <cmath>

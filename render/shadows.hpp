@@ -1,4 +1,4 @@
-// Shadow rays through transparent surfaces (povray-semantics.md §3.5) and interior fade (§5.2).
+// Shadow rays through transparent surfaces and interior fade, as POV-Ray 3.7 traces them.
 #pragma once
 #include <glm/vec3.hpp>
 

@@ -6,7 +6,7 @@
 namespace lumen::render {
 
 glm::dvec3 sky_colour(const scene::Scene& scene, const glm::dvec3& dir, glm::dvec3* through) {
-    // The interpreter has already premultiplied the rgb by (1 − transmit) (§7.4).
+    // The interpreter has already premultiplied the rgb by (1 − transmit).
     const scene::Colour& bg = scene.background;
     const glm::dvec3 background(bg.r, bg.g, bg.b);
     if (through) *through = glm::dvec3(1);

@@ -1,5 +1,5 @@
 // Resolving a (layered, possibly patterned) texture at a point into plain layers, and the
-// light filter of a surface for shadow rays (§3.5, §3.6).
+// light filter of a surface for shadow rays.
 #pragma once
 #include <new>
 

@@ -18,7 +18,7 @@
 namespace lumen::render {
 namespace {
 
-constexpr double kMinDepth = 1e-4;       // every ray ignores nearer hits (§7.3)
+constexpr double kMinDepth = 1e-4;       // every ray ignores nearer hits
 constexpr double kMaxDistance = 1e7;     // depth reported for rays that escape
 constexpr int kMaxSkippedSurfaces = 64;  // no_image / no_reflection objects passed through
 
@@ -31,7 +31,7 @@ double max_abs(const glm::dvec3& c) {
 double ior_of(const scene::Interior* in) { return in ? in->ior : 1.0; }
 
 // Where a ray goes when it crosses the surface of `hit`'s object: the new interior list and
-// the ratio of refractive indices (§5.1).
+// the ratio of refractive indices.
 double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& after) {
     after = before;
     const double ior = ior_of(hit.interior);

@@ -1,4 +1,4 @@
-// TraceRay (povray-semantics.md §3, §5, §7): nearest hit, layered shading, reflection,
+// POV-Ray's TraceRay: nearest hit, layered shading, reflection,
 // refraction with interior lists, total internal reflection, fade, continued rays, sky and fog.
 #pragma once
 #include <vector>

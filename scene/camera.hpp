@@ -1,5 +1,5 @@
 // The camera after POV's fix-ups (angle, look_at, orthographic scaling, transforms), so the
-// renderer only maps pixels to rays (povray-semantics.md §1).
+// renderer only maps pixels to rays (POV-Ray 3.7's rules).
 #pragma once
 #include <optional>
 #include <glm/vec3.hpp>

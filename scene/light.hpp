@@ -1,4 +1,4 @@
-// Light sources (povray-semantics.md §6). Positions are in world space (transforms applied).
+// Light sources (POV-Ray 3.7's rules). Positions are in world space (transforms applied).
 #pragma once
 #include <optional>
 #include <vector>

@@ -1,4 +1,4 @@
-// Closed-form view factors from the heat-transfer catalogues (radiosity-notes.md §2.1). They
+// Closed-form view factors from the heat-transfer catalogues. They
 // are the references the numerical form factors are tested against.
 #pragma once
 

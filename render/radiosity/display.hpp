@@ -1,4 +1,4 @@
-// Showing the radiosity solution (radiosity-notes.md §5.6): the tracer asks for the incident
+// Showing the radiosity solution: the tracer asks for the incident
 // indirect light G at each diffuse hit.
 // - preview: G interpolated from the element's vertices (fast; shows the mesh).
 // - gather: a final gather per point (cosine rays whose hits return the interpolated B of

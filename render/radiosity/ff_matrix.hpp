@@ -31,7 +31,7 @@ FormFactorMatrix analytic_matrix(const std::vector<Patch>& patches,
 
 // Lambert's unoccluded area average times the visible fraction of `samples` stratified
 // point pairs (one on each patch), symmetric in i and j so reciprocity holds exactly. Exact
-// for unoccluded pairs; no near-field blow-up (radiosity-notes.md §5.4).
+// for unoccluded pairs; no near-field blow-up.
 FormFactorMatrix lambert_visibility_matrix(const std::vector<Patch>& patches,
                                            const Visibility& visible, int samples,
                                            uint64_t seed, const QuadratureOptions& q = {});
@@ -49,7 +49,7 @@ FormFactorMatrix hemicube_matrix(const std::vector<Patch>& patches, int resoluti
 void symmetrise(FormFactorMatrix& F, const std::vector<Patch>& patches);
 
 // The form factor matrix of the inside of a sphere: F_ij = A_j / A_total (exact for any
-// patching of a true sphere, notes §2.1 (e)); useful for furnace tests.
+// patching of a true sphere); useful for furnace tests.
 FormFactorMatrix sphere_interior_matrix(const std::vector<Patch>& patches);
 
 }  // namespace lumen::render::radiosity

@@ -1,5 +1,4 @@
-// Closed forms, Lambert's contour formula and its area average against the catalogue values
-// (radiosity-notes.md §2.2, §2.3).
+// Closed forms, Lambert's contour formula and its area average against the catalogue values.
 #include <cmath>
 
 #include <gtest/gtest.h>

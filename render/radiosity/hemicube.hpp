@@ -1,6 +1,6 @@
 // The hemicube (Cohen & Greenberg 1985), kept as the lecture's comparison baseline: a half
 // cube over a point, each pixel sees the nearest patch through its centre and adds its
-// precomputed delta form factor. All-or-nothing pixels alias; see radiosity-notes.md §2.5.
+// precomputed delta form factor. All-or-nothing pixels alias.
 #pragma once
 #include <vector>
 

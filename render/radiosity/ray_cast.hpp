@@ -1,5 +1,5 @@
-// Monte Carlo form factors by cosine-weighted ray casting from uniform points on the source
-// (radiosity-notes.md §5.4), and Wallace's point-to-patch estimate (Lambert's exact
+// Monte Carlo form factors by cosine-weighted ray casting from uniform points on the source,
+// and Wallace's point-to-patch estimate (Lambert's exact
 // unoccluded value times a sampled visible fraction). Occlusion comes from a callback so the
 // tracer's own BVH can answer it later.
 #pragma once

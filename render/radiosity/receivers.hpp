@@ -1,4 +1,4 @@
-// The receiving side of the solution (radiosity-notes.md §5.3, §5.6): the patches of the scene
+// The receiving side of the solution: the patches of the scene
 // mesh shoot (their B is the solve's), and finer elements receive. The final gather runs at
 // the vertices the camera sees; elements whose gathered G differs between corners by more
 // than a tolerance split in four (edge midpoints), down to a minimum size and within a vertex

@@ -1,5 +1,5 @@
-// Vertex form factors of a scene mesh by the three methods of Radiosity_Form_Factors
-// (radiosity-notes.md §5.4): ray casting (the default), Lambert's analytic point-to-polygon
+// Vertex form factors of a scene mesh by the three methods of Radiosity_Form_Factors:
+// ray casting (the default), Lambert's analytic point-to-polygon
 // value with sampled visibility for emitters and near pairs (where a few rays are noisiest),
 // and the hemicube as the lecture's baseline, all cast through the renderer's geometry.
 #include <algorithm>

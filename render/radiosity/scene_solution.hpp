@@ -1,4 +1,4 @@
-// The view-independent radiosity solution of a scene (radiosity-notes.md §4.4, §5.1): per
+// The view-independent radiosity solution of a scene: per
 // vertex side, the radiosity B leaving it after bounce k−1 and the incident indirect light G
 // of bounce k, where k is the bounce count (POV's recursion_limit) or ∞ (converged).
 //   B⁰ = E + ρ(H + G_env),  Gᵏ = F Bᵏ⁻¹ + G_env,  Bᵏ = E + ρ(H + Gᵏ)

@@ -149,7 +149,7 @@ TEST(Solvers, NonUniformSphere) {
     EXPECT_LT(previous, 0.1);
 }
 
-// Open scenes balance emitted power against absorbed and escaping power (notes §2.4).
+// Open scenes balance emitted power against absorbed and escaping power.
 TEST(Solvers, OpenBoxPowerBalance) {
     auto patches = unit_cube_inside(2);
     std::erase_if(patches, [](const Patch& p) { return p.centroid.z > 0.99; });  // no lid
