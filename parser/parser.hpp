@@ -15,7 +15,8 @@ struct ParseError : std::runtime_error {
         : std::runtime_error(msg), loc(l), hint(std::move(h)) {}
 };
 
-// Parses a whole file into a Body node. Throws ParseError.
+// Parses a whole file into a Body node. Throws ParseError, also for a binary or UTF-16 file
+// (text_encoding.hpp).
 // Nesting (parentheses, vectors, blocks, directives, unary operators) deeper than
 // kMaxNesting gives a ParseError instead of a stack overflow.
 ast::NodePtr parse_file(const SourceFile& file);
