@@ -11,15 +11,18 @@ namespace {
 using MathDomainTest = EvalTest;
 
 TEST_F(MathDomainTest, ErrorsWherePovRayStops) {
-    EXPECT_EQ(expr_error("sqrt(-1)"), "expr:1:6: error: sqrt of a negative number (-1)");
-    EXPECT_EQ(expr_error("sqrt(-1e-30)"), "expr:1:6: error: sqrt of a negative number (-1e-30)");
-    EXPECT_EQ(expr_error("ln(0)"), "expr:1:4: error: ln of zero or a negative number (0)");
-    EXPECT_EQ(expr_error("ln(-1)"), "expr:1:4: error: ln of zero or a negative number (-1)");
-    EXPECT_EQ(expr_error("log(0)"), "expr:1:5: error: log of zero or a negative number (0)");
-    EXPECT_EQ(expr_error("atan2(0,0)"),
-              "expr:1:1: error: atan2(0, 0) is undefined: both arguments are within 1e-10 of 0");
-    EXPECT_NE(expr_error("atan2(1e-10,0)"), "");  // POV's tolerance includes 1e-10 itself
-    EXPECT_EQ(expr_error("pow(0,0)"), "expr:1:1: error: pow(0, 0) is undefined");
+    const std::pair<const char*, const char*> cases[] = {
+        {"sqrt(-1)", "expr:1:6: error: sqrt of a negative number (-1)"},
+        {"sqrt(-1e-30)", "expr:1:6: error: sqrt of a negative number (-1e-30)"},
+        {"ln(0)", "expr:1:4: error: ln of zero or a negative number (0)"},
+        {"ln(-1)", "expr:1:4: error: ln of zero or a negative number (-1)"},
+        {"log(0)", "expr:1:5: error: log of zero or a negative number (0)"},
+        {"atan2(0,0)", "expr:1:1: error: atan2(0, 0) is undefined: both arguments are within 1e-10 of 0"},
+        // POV's tolerance includes 1e-10 itself
+        {"atan2(1e-10,0)", "expr:1:1: error: atan2(1e-10, 0) is undefined: both arguments are within 1e-10 of 0"},
+        {"pow(0,0)", "expr:1:1: error: pow(0, 0) is undefined"},
+    };
+    for (const auto& [expr, error] : cases) EXPECT_EQ(expr_error(expr), error);
     EXPECT_TRUE(messages.empty());
 }
 

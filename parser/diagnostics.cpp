@@ -46,7 +46,7 @@ namespace {
 // The source line under a headline, escaped, and a caret under column `column` (bytes). A
 // line longer than the terminal (a binary file's) is cut to a window around the caret.
 std::string source_excerpt(std::string_view line, uint32_t column) {
-    constexpr size_t kWindow = 100;
+    constexpr size_t kWindow = 200;  // sample scenes have lines of 130 characters
     const size_t caret_byte = std::min<size_t>(column > 0 ? column - 1 : 0, line.size());
     std::string before = printable(line.substr(0, caret_byte), false);
     std::string after = printable(line.substr(caret_byte), false);

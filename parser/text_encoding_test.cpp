@@ -76,8 +76,8 @@ TEST(Printable, DiagnosticsNeverPrintRawBytes) {
 TEST(Printable, LongLinesAreCutAroundTheCaret) {
     SourceFile f{"long.pov", std::string(300, 'a') + "X" + std::string(300, 'b') + "\n"};
     const std::string out = format_diagnostic(Diagnostic{Severity::Error, SourceLoc{&f, 1, 301, 300}, "x", {}, {}});
-    EXPECT_EQ(out, "long.pov:1:301: error: x\n    ..." + std::string(50, 'a') + "X" + std::string(99, 'b') +
-                       "...\n       " + std::string(50, ' ') + "^\n");
+    EXPECT_EQ(out, "long.pov:1:301: error: x\n    ..." + std::string(100, 'a') + "X" + std::string(199, 'b') +
+                       "...\n       " + std::string(100, ' ') + "^\n");
 }
 
 }  // namespace
