@@ -37,26 +37,52 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 }  // namespace
 
 std::string format_headline(const Diagnostic& d) {
-    return d.loc.str() + ": " + severity_name(d.severity) + ": " + d.message;
+    return printable(d.loc.str(), false) + ": " + severity_name(d.severity) + ": " +
+           printable(d.message, true);
 }
+
+namespace {
+
+// The source line under a headline, escaped, and a caret under column `column` (bytes). A
+// line longer than the terminal (a binary file's) is cut to a window around the caret.
+std::string source_excerpt(std::string_view line, uint32_t column) {
+    constexpr size_t kWindow = 200;  // sample scenes have lines of 130 characters
+    const size_t caret_byte = std::min<size_t>(column > 0 ? column - 1 : 0, line.size());
+    std::string before = printable(line.substr(0, caret_byte), false);
+    std::string after = printable(line.substr(caret_byte), false);
+    std::string lead = "    ";
+    if (display_width(before) > kWindow) {  // keep the last kWindow / 2 characters before it
+        size_t keep = before.size(), chars = 0;
+        while (keep > 0 && chars < kWindow / 2)
+            chars += (static_cast<unsigned char>(before[--keep]) & 0xC0) != 0x80;
+        before = before.substr(keep);
+        lead += "...";
+    }
+    if (display_width(after) > kWindow) {
+        size_t cut = 0, chars = 0;
+        while (cut < after.size() && chars < kWindow)
+            chars += (static_cast<unsigned char>(after[cut++]) & 0xC0) != 0x80;
+        while (cut < after.size() && (static_cast<unsigned char>(after[cut]) & 0xC0) == 0x80) ++cut;
+        after = after.substr(0, cut) + "...";
+    }
+    std::string out = lead + before + after + "\n" + std::string(lead.size(), ' ');
+    // Keep tabs so the caret lines up under the same column.
+    for (char c : before)
+        if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) out += c == '\t' ? '\t' : ' ';
+    return out + "^\n";
+}
+
+}  // namespace
 
 std::string format_diagnostic(const Diagnostic& d) {
     std::string out = format_headline(d) + "\n";
     if (d.loc.file && d.loc.line > 0) {
         std::string_view line = d.loc.file->line_text(d.loc.line);
-        if (!line.empty()) {
-            out += "    ";
-            out += line;
-            out += "\n    ";
-            // Keep tabs so the caret lines up under the same column.
-            for (uint32_t i = 1; i < d.loc.column && i - 1 < line.size(); ++i)
-                out += line[i - 1] == '\t' ? '\t' : ' ';
-            out += "^\n";
-        }
+        if (!line.empty()) out += source_excerpt(line, d.loc.column);
     }
-    if (!d.hint.empty()) out += d.loc.str() + ": note: " + d.hint + "\n";
+    if (!d.hint.empty()) out += printable(d.loc.str(), false) + ": note: " + printable(d.hint, false) + "\n";
     for (const SourceLoc& inc : d.include_chain)
-        out += "in file included from " + inc.str() + "\n";
+        out += "in file included from " + printable(inc.str(), false) + "\n";
     return out;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/source.hpp"
@@ -38,6 +39,13 @@ std::string format_diagnostic(const Diagnostic& d);
 // Just the first line of format_diagnostic, without the newline:
 //   scene.pov:12:5: error: unknown keyword 'spere'
 std::string format_headline(const Diagnostic& d);
+
+// `s` as it may go to a terminal: bytes that are not valid UTF-8, and control characters
+// other than tab (and newline when `keep_newlines`), become \xNN, so that a binary or
+// mis-encoded file never sends raw bytes to the terminal (base/printable.cpp).
+std::string printable(std::string_view s, bool keep_newlines);
+// The number of characters (code points) in printable text.
+size_t display_width(std::string_view printable_text);
 
 // The candidate closest to `word` by edit distance, if it is close enough to be a likely
 // misspelling; empty otherwise.

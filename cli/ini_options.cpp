@@ -159,6 +159,13 @@ double to_positive(const Setting& s) {
     return v;
 }
 
+// A count for the evaluation limits: a whole number from 1 up.
+double to_count(const Setting& s) {
+    const double v = to_double(s);
+    if (v != std::floor(v) || v < 1 || v > 1e15) bad_value(s, "a whole number from 1 to 1e15");
+    return v;
+}
+
 struct IniKey {
     const char* name;
     void (*set)(Options&, const Setting&);
@@ -230,6 +237,16 @@ const IniKey kKeys[] = {
     {"Include_Ini",
      [](Options& o, const Setting& s) { read_ini_file(o, s.sources, s.text, s.loc, s.depth + 1); }},
     {"Verbose", [](Options& o, const Setting& s) { o.verbose = to_bool(s); }},
+    // lumen's evaluation limits (interp/interpret.hpp), named by the errors they give.
+    {"Max_Loop_Iterations",
+     [](Options& o, const Setting& s) { o.scene.max_loop_iterations = (long long)to_count(s); }},
+    {"Max_Eval_Steps", [](Options& o, const Setting& s) { o.scene.max_steps = (long long)to_count(s); }},
+    {"Max_String_Length",
+     [](Options& o, const Setting& s) { o.scene.max_string_length = size_t(to_count(s)); }},
+    {"Max_Array_Elements",
+     [](Options& o, const Setting& s) { o.scene.max_array_elements = size_t(to_count(s)); }},
+    {"Max_Eval_Memory",  // MiB
+     [](Options& o, const Setting& s) { o.scene.max_memory = size_t(to_count(s)) << 20; }},
     {"Radiosity",
      [](Options& o, const Setting& s) { o.radiosity.enabled = to_bool(s); }},
     {"Radiosity_Method", set_radiosity_method},

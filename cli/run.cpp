@@ -14,9 +14,11 @@
 #include "cli/frames.hpp"
 #include "cli/progress.hpp"
 #include "cli/radiosity_pass.hpp"
+#include "cli/stop_signals.hpp"
 #include "interp/dump_scene.hpp"
 #include "base/diagnostics.hpp"
 #include "parser/parser.hpp"
+#include "base/stop_request.hpp"
 #include "base/warning_log.hpp"
 #include "render/frame.hpp"
 #include "render/image_output.hpp"
@@ -97,6 +99,7 @@ int run_frames(const Options& o, SourceManager& sources) {
         }
         if (o.check) return report_unsupported(scene);
         render_frame(o, frame, scene, parse_seconds, radiosity);
+        throw_if_stop_requested();  // a signal during the file write: that frame is complete
     }
     return 0;
 }
@@ -115,8 +118,13 @@ int run_command_line(const std::vector<std::string>& args) {
         }
         for (const std::string& note : o.notes) std::fprintf(stderr, "%s\n", note.c_str());
         int status = 0;
+        const StopSignals signals;
         run_with_big_stack([&] { status = run_frames(o, sources); });
         return status;
+    } catch (const Interrupted& e) {
+        std::fprintf(stderr, "lumen: stopped by %s; no image written for the unfinished frame\n",
+                     e.signal == SIGINT ? "SIGINT" : e.signal == SIGTERM ? "SIGTERM" : "a signal");
+        return stopped_exit_status(e.signal);
     } catch (const LumenError& e) {
         print_diagnostic(e.diag);
     } catch (const std::bad_alloc&) {

@@ -7,8 +7,8 @@
 #include <functional>
 #include <unordered_map>
 
+#include "interp/builtin_table.hpp"
 #include "interp/conversions.hpp"
-#include "interp/evaluator.hpp"
 
 namespace lumen::interp {
 
@@ -107,39 +107,9 @@ Value vec3(const glm::dvec3& v, SourceLoc loc) { return vec({v.x, v.y, v.z}, loc
 
 double dot(const glm::dvec3& a, const glm::dvec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-using Args = std::vector<Value>;
-using Fn = std::function<Value(Evaluator&, const ast::Node&, Args&)>;
-
-struct Builtin {
-    int min_args, max_args;  // max -1 = any number
-    bool lazy;               // receives no evaluated arguments: reads the call node itself
-    Fn fn;
-};
-
-Builtin unary(double (*f)(double)) {
-    return {1, 1, false, [f](Evaluator&, const ast::Node& c, Args& a) {
-                return Value{f(to_float(a[0])), c.loc};
-            }};
-}
-
-Builtin binary(double (*f)(double, double)) {
-    return {2, 2, false, [f](Evaluator&, const ast::Node& c, Args& a) {
-                return Value{f(to_float(a[0]), to_float(a[1])), c.loc};
-            }};
-}
-
-template <class Op>
-Builtin bitwise(Op op) {
-    return {2, -1, false, [op](Evaluator&, const ast::Node& c, Args& a) {
-                long long acc = to_integer(a[0]);
-                for (size_t i = 1; i < a.size(); ++i) acc = op(acc, to_integer(a[i]));
-                return Value{static_cast<double>(acc), c.loc};
-            }};
-}
-
 const std::string& str_arg(const Args& a, size_t i) { return to_string_value(a[i]); }
 
-const std::unordered_map<std::string, Builtin>& builtin_table();
+const BuiltinTable& builtin_table();
 
 }  // namespace
 
@@ -166,7 +136,13 @@ Value Evaluator::call_builtin(const ast::Node& call) {
     Args args;
     if (!b.lazy)
         for (const auto& c : call.children) args.push_back(eval(*c));
-    return b.fn(*this, call, args);
+    Value result = b.fn(*this, call, args);
+    // POV-Ray lets some results overflow or go undefined silently (math_builtins.cpp): say so
+    // where an inf or nan first appears. Lazy built-ins (select, sum, prod) pass on values
+    // whose own expressions were checked.
+    if (!b.lazy && !all_finite(result) && std::all_of(args.begin(), args.end(), all_finite))
+        warn(call.loc, "'" + call.text + "' gives " + non_finite_text(result) + " here");
+    return result;
 }
 
 // Random streams: seed(n) starts a stream and returns its number; rand(stream) steps a
@@ -219,49 +195,10 @@ bool Evaluator::is_defined(const ast::Node& target) {
 
 namespace {
 
-const std::unordered_map<std::string, Builtin>& builtin_table() {
-    static const std::unordered_map<std::string, Builtin> table = [] {
-        std::unordered_map<std::string, Builtin> t;
-        // ---- math
-        t["abs"] = unary([](double a) { return std::fabs(a); });
-        t["acos"] = unary([](double a) { return std::acos(a); });
-        t["acosh"] = unary([](double a) { return std::acosh(a); });
-        t["asin"] = unary([](double a) { return std::asin(a); });
-        t["asinh"] = unary([](double a) { return std::asinh(a); });
-        t["atan"] = unary([](double a) { return std::atan(a); });
-        t["atanh"] = unary([](double a) { return std::atanh(a); });
-        t["ceil"] = unary([](double a) { return std::ceil(a); });
-        t["cos"] = unary([](double a) { return std::cos(a); });
-        t["cosh"] = unary([](double a) { return std::cosh(a); });
-        t["degrees"] = unary([](double a) { return a * 180.0 / kPi; });
-        t["exp"] = unary([](double a) { return std::exp(a); });
-        t["floor"] = unary([](double a) { return std::floor(a); });
-        t["int"] = unary([](double a) { return std::trunc(a); });
-        t["ln"] = unary([](double a) { return std::log(a); });
-        t["log"] = unary([](double a) { return std::log10(a); });
-        t["radians"] = unary([](double a) { return a * kPi / 180.0; });
-        t["sin"] = unary([](double a) { return std::sin(a); });
-        t["sinh"] = unary([](double a) { return std::sinh(a); });
-        t["sqrt"] = unary([](double a) { return std::sqrt(a); });
-        t["tan"] = unary([](double a) { return std::tan(a); });
-        t["tanh"] = unary([](double a) { return std::tanh(a); });
-        t["atan2"] = binary([](double a, double b) { return std::atan2(a, b); });
-        t["div"] = binary([](double a, double b) { return std::trunc(a / b); });
-        t["mod"] = binary([](double a, double b) { return std::fmod(a, b); });
-        t["pow"] = binary([](double a, double b) { return std::pow(a, b); });
-        t["bitwise_and"] = bitwise([](long long a, long long b) { return a & b; });
-        t["bitwise_or"] = bitwise([](long long a, long long b) { return a | b; });
-        t["bitwise_xor"] = bitwise([](long long a, long long b) { return a ^ b; });
-        auto extreme = [](bool want_max) {
-            return Builtin{1, -1, false, [want_max](Evaluator&, const ast::Node& c, Args& a) {
-                               double r = to_float(a[0]);
-                               for (size_t i = 1; i < a.size(); ++i)
-                                   r = want_max ? std::max(r, to_float(a[i])) : std::min(r, to_float(a[i]));
-                               return Value{r, c.loc};
-                           }};
-        };
-        t["min"] = extreme(false);
-        t["max"] = extreme(true);
+const BuiltinTable& builtin_table() {
+    static const BuiltinTable table = [] {
+        BuiltinTable t;
+        add_math_builtins(t);
         t["select"] = {3, 4, true, [](Evaluator& ev, const ast::Node& c, Args&) {
                            double s = ev.eval_float(*c.children[0]);
                            size_t pick = c.children.size() == 3 ? (s < 0 ? 1 : 2)
@@ -318,8 +255,12 @@ const std::unordered_map<std::string, Builtin>& builtin_table() {
                         if (!(n >= 0 && n < 65536)) throw LumenError(a[0].loc, "chr() needs a code from 0 to 65535");
                         return Value{utf8(static_cast<long>(n)), c.loc};
                     }};
-        t["concat"] = {1, -1, false, [](Evaluator&, const ast::Node& c, Args& a) {
+        t["concat"] = {1, -1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
+                           size_t length = 0;
+                           for (size_t i = 0; i < a.size(); ++i) length += str_arg(a, i).size();
+                           ev.budget.string_built(length, c.loc);  // before it is built
                            std::string s;
+                           s.reserve(length);
                            for (size_t i = 0; i < a.size(); ++i) s += str_arg(a, i);
                            return Value{s, c.loc};
                        }};

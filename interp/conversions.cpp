@@ -92,4 +92,22 @@ double six_digits(double x) {
 
 double grey(const scene::Colour& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
 
+bool all_finite(const Value& v) {
+    if (v.is<double>()) return std::isfinite(v.as<double>());
+    if (!v.is<VecN>() && !v.is<scene::Colour>()) return true;
+    for (double c : components(v))
+        if (!std::isfinite(c)) return false;
+    return true;
+}
+
+std::string non_finite_text(const Value& v) {
+    std::vector<double> c = is_numeric(v) ? components(v) : std::vector<double>{};
+    for (double x : c) {
+        if (std::isfinite(x)) continue;
+        const std::string word = std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+        return v.is<double>() ? word : std::string("a ") + v.type_name() + " with " + word;
+    }
+    return "a finite value";
+}
+
 }  // namespace lumen::interp

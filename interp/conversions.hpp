@@ -24,6 +24,11 @@ int to_int(const Value& v);  // truncates toward zero, like POV's int()
 long long to_integer(const Value& v);  // same, for the 64-bit range (bitwise functions, seeds)
 std::string number_text(double f);     // "3", "-1", "2.5", "1e+30" for messages
 
+// True when every number in `v` (float, vector or colour) is finite; true for other values.
+bool all_finite(const Value& v);
+// "inf", "-inf" or "nan" for a float; "a vector with nan" and the like otherwise.
+std::string non_finite_text(const Value& v);
+
 // The numeric components of a float/vector/colour (1, n or 5 of them).
 std::vector<double> components(const Value& v);
 scene::Colour colour_from(const std::vector<double>& c);  // missing channels are 0

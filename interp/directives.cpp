@@ -133,7 +133,9 @@ Flow Evaluator::run_switch(const ast::Node& n, std::vector<Item>& out) {
 void Evaluator::loop_limit(long long& iterations, const ast::Node& node, const char* what) {
     if (++iterations > options_.max_loop_iterations)
         throw LumenError(node.loc, std::string(what) + " loop exceeded " +
-                                       std::to_string(options_.max_loop_iterations) + " iterations");
+                                       std::to_string(options_.max_loop_iterations) +
+                                       " iterations (limit Max_Loop_Iterations): an endless loop?");
+    budget.step(node.loc);
 }
 
 Flow Evaluator::run_loop_body(const ast::Node& body, std::vector<Item>& out) {

@@ -90,8 +90,10 @@ TEST_F(DirectiveTest, ForStepZeroIsAnError) {
 
 TEST_F(DirectiveTest, LoopLimitsGiveErrors) {
     options.max_loop_iterations = 1000;
-    EXPECT_EQ(error_of("#while (1)\n#end"), "test.pov:1:1: error: #while loop exceeded 1000 iterations");
-    EXPECT_EQ(error_of("#for (I, 0, 1e9) #end"), "test.pov:1:1: error: #for loop exceeded 1000 iterations");
+    EXPECT_EQ(error_of("#while (1)\n#end"), "test.pov:1:1: error: #while loop exceeded 1000 iterations "
+                                           "(limit Max_Loop_Iterations): an endless loop?");
+    EXPECT_EQ(error_of("#for (I, 0, 1e9) #end"), "test.pov:1:1: error: #for loop exceeded 1000 iterations "
+                                                "(limit Max_Loop_Iterations): an endless loop?");
 }
 
 TEST_F(DirectiveTest, BreakOutsideALoopIsAnError) {

@@ -90,6 +90,33 @@ TEST_F(IncludeTest, ErrorsInsideIncludesCarryTheChainInnermostFirst) {
     EXPECT_EQ(d.include_chain[1].line, 1u);
 }
 
+TEST_F(IncludeTest, BinaryAndUtf16IncludesAreNamedWithTheChain) {
+    using namespace std::string_literals;
+    write("image.png", "\x89PNG\r\n\x1A\n\0\0\0\rIHDR"s);
+    write("wide.inc", "\xFF\xFE#\0d\0"s);
+    write("outer.inc", "#include \"image.png\"\n");
+    Diagnostic d;
+    EXPECT_EQ(error_in_main("#version 3.7;\n#include \"outer.inc\"\n", &d).rfind("'", 0), 0u);
+    EXPECT_NE(d.message.find("is a binary file (a PNG image), not SDL text"), std::string::npos) << d.message;
+    EXPECT_NE(d.loc.file->name.find("image.png"), std::string::npos);
+    ASSERT_EQ(d.include_chain.size(), 2u);
+    EXPECT_EQ(d.include_chain[0].line, 1u);
+    EXPECT_NE(d.include_chain[1].file->name.find("main.pov"), std::string::npos);
+    EXPECT_EQ(d.include_chain[1].line, 2u);
+    const std::string shown = format_diagnostic(d);
+    for (char c : shown) EXPECT_TRUE(c == '\n' || (c >= 0x20 && c < 0x7F)) << shown;
+    EXPECT_NE(error_in_main("#include \"wide.inc\"\n", &d).find("is UTF-16 LE text: save it as UTF-8"),
+              std::string::npos);
+    EXPECT_EQ(d.include_chain.size(), 1u);
+}
+
+TEST_F(IncludeTest, Utf8ByteOrderMarkIsAcceptedInIncludes) {
+    // POV-Ray 3.7 accepts it only in the scene file ("Illegal character ... ef" in an include).
+    write("bom.inc", "\xEF\xBB\xBF#declare FromBom = 3;\n");
+    run_main_file("\xEF\xBB\xBF#include \"bom.inc\"\n");
+    EXPECT_DOUBLE_EQ(num_var("FromBom"), 3);
+}
+
 TEST_F(IncludeTest, RecursiveIncludeHitsTheDepthLimit) {
     write("self.inc", "#include \"self.inc\"\n");
     options.max_include_depth = 10;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/budget.hpp"
 #include "interp/builders.hpp"
 #include "interp/interpret.hpp"
 #include "interp/scope.hpp"
@@ -111,7 +112,10 @@ public:
     void warn(SourceLoc loc, const std::string& message, Severity sev = Severity::Warning);
 
     const InterpOptions& options() const { return options_; }
+    // True while a function { } body is evaluated: POV-Ray's function VM checks no domains.
+    bool in_function_body() const { return in_function_body_; }
     BuildContext ctx;
+    Budget budget;  // steps and memory of the whole run
     SymbolTable symbols;
     bool version_given = false;
 
@@ -141,6 +145,7 @@ private:
     std::string scene_dir_;
     int macro_depth_ = 0;
     int include_depth_ = 0;
+    bool in_function_body_ = false;
     int breakable_ = 0;  // > 0 inside #switch/#while/#for/macro bodies: #break is allowed
     std::vector<uint32_t> rand_streams_;  // seed() streams, indexed by the value seed() returns
     // Parsed trees stay alive for the whole run: MacroValue/FunctionValue point into them.

@@ -76,6 +76,9 @@ static Value apply_binary(Evaluator& ev, const std::string& op, const Value& a, 
     std::vector<double> x = widened(a, n), y = widened(b, n);
     char o = op[0];
     bool divided_by_zero = false;
+    // POV-Ray's parser makes x / 0 +inf whatever x is (1/0, -1/0, 0/0; math_builtins.cpp),
+    // its function VM the IEEE quotient.
+    const bool pov_parser = !ev.in_function_body();
     for (size_t i = 0; i < n; ++i) {
         switch (o) {
             case '+': x[i] += y[i]; break;
@@ -83,18 +86,24 @@ static Value apply_binary(Evaluator& ev, const std::string& op, const Value& a, 
             case '*': x[i] *= y[i]; break;
             case '/':
                 if (y[i] == 0.0) divided_by_zero = true;
-                x[i] /= y[i];
+                x[i] = y[i] == 0.0 && pov_parser ? HUGE_VAL : x[i] / y[i];
                 break;
             default: throw LumenError(loc, "unknown operator '" + op + "'");
         }
     }
-    if (divided_by_zero) ev.warn(b.loc, "division by zero");
-    return make_numeric(s, std::move(x), loc);
+    Value result = make_numeric(s, std::move(x), loc);
+    if (divided_by_zero)
+        ev.warn(b.loc, "division by zero gives " + non_finite_text(result));
+    else if (!all_finite(result) && all_finite(a) && all_finite(b))
+        ev.warn(loc, "'" + op + "' overflows to " + non_finite_text(result) + " here");
+    return result;
 }
 
 Value Evaluator::eval(const ast::Node& e) {
     switch (e.kind) {
-        case Kind::Number: return Value{e.number, e.loc};
+        case Kind::Number:
+            if (!std::isfinite(e.number)) warn(e.loc, "number too large for a double: it is inf");
+            return Value{e.number, e.loc};
         case Kind::String: return Value{e.text, e.loc};
         case Kind::Ident: return lookup(e);
         case Kind::Vector: {
@@ -219,14 +228,17 @@ Evaluator::ArraySlot Evaluator::array_slot(const ast::Node& e) {
 
 // Array declarations: `array[2][3] { {1,2,3}, {4,5,6} }`.
 Value Evaluator::array_decl(const ast::Node& e) {
-    constexpr size_t kMaxElements = 50'000'000;
+    const size_t max_elements = options_.max_array_elements;
     auto arr = std::make_shared<ArrayValue>();
     size_t ndims = e.children.size() - (e.flag ? 1 : 0);
     size_t total = 1;
     for (size_t d = 0; d < ndims; ++d) {
         double f = eval_float(*e.children[d]);
-        if (!(f >= 1.0) || f * double(total) > double(kMaxElements))
-            throw LumenError(e.children[d]->loc, "invalid array size " + number_text(f));
+        if (!(f >= 1.0)) throw LumenError(e.children[d]->loc, "invalid array size " + number_text(f));
+        if (f * double(total) > double(max_elements))
+            throw LumenError(e.children[d]->loc, "array of " + number_text(std::floor(f) * double(total)) +
+                                                     " elements exceeds the limit of " + std::to_string(max_elements) +
+                                                     " per array (Max_Array_Elements)");
         arr->dims.push_back(static_cast<size_t>(f));
         total *= arr->dims.back();
     }
@@ -239,6 +251,7 @@ Value Evaluator::array_decl(const ast::Node& e) {
         }
     }
     if (arr->dims.empty()) throw LumenError(e.loc, "an array needs at least one dimension");
+    budget.allocating(total * sizeof(arr->elems[0]), e.loc);
     arr->elems.resize(total);
     if (e.flag) {
         size_t next = 0;

@@ -9,7 +9,7 @@ namespace lumen::interp {
 using ast::Kind;
 
 Evaluator::Evaluator(SourceManager& sources, const InterpOptions& options, WarningSink warn)
-    : sources_(sources), options_(options), warn_(std::move(warn)) {
+    : budget(options), sources_(sources), options_(options), warn_(std::move(warn)) {
     ctx.warn = warn_;
     if (options_.version) {
         ctx.language_version = *options_.version;

@@ -11,6 +11,9 @@
 
 namespace lumen::interp {
 
+// Half of the physical memory, at most 8 GiB: the default heap limit of an evaluation.
+size_t default_max_memory();
+
 struct InterpOptions {
     // Include search order (POV-Ray's): the scene's folder, then these (+L / Library_Path),
     // then the installed POV-Ray include folder when `default_include_path` is set.
@@ -26,8 +29,14 @@ struct InterpOptions {
     int image_width = 320, image_height = 240;
     bool clock_on = false;  // clock_on identifier
     std::optional<double> version;  // +MV / Version=: initial #version
-    // Limits (errors, never crashes).
-    long long max_loop_iterations = 10'000'000;  // per #while / #for loop
+    // Limits (located errors, never crashes, hangs or exhausted memory; interp/budget.hpp;
+    // INI keys Max_*). POV-Ray has none. The most that any of POV-Ray's 396 sample scenes
+    // needs is noted beside each. A step costs 0.02-2 us: 1e8 steps end in seconds to minutes.
+    long long max_loop_iterations = 10'000'000;  // per #while / #for / sum() / prod()
+    long long max_steps = 100'000'000;           // loop iterations + macro/function calls (480710)
+    size_t max_string_length = size_t(16) << 20;  // bytes per string (199)
+    size_t max_array_elements = 10'000'000;       // per array (about 10000)
+    size_t max_memory = default_max_memory();     // heap while evaluating, 0 = none (472 MB)
     int max_macro_depth = 200;
     int max_include_depth = 64;
 };

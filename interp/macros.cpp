@@ -34,6 +34,7 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
     if (macro_depth_ >= options_.max_macro_depth)
         throw LumenError(call.loc, "macro '" + macro.text + "' nested more than " +
                                        std::to_string(options_.max_macro_depth) + " calls deep");
+    budget.step(call.loc);
     const ast::Node& body = parse_macro_body(macro);
 
     // Arguments are evaluated in the caller's scope, before the new frame exists.

@@ -29,7 +29,9 @@ Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
     if (macro_depth_ >= options_.max_macro_depth)
         throw LumenError(call.loc, "function '" + call.text + "' nested more than " +
                                        std::to_string(options_.max_macro_depth) + " calls deep");
+    budget.step(call.loc);
     ScopedSet depth(macro_depth_, macro_depth_ + 1);
+    ScopedSet vm(in_function_body_, true);
     FrameGuard frame(symbols);
     for (size_t i = 0; i < params.size(); ++i) symbols.local(params[i], std::move(args[i]));
     Value result = eval(body);

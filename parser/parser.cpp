@@ -6,6 +6,7 @@
 
 #include "parser/control.hpp"
 #include "parser/grammar.hpp"
+#include "parser/text_encoding.hpp"
 
 namespace lumen::parser {
 
@@ -36,6 +37,7 @@ ast::NodePtr run(Input& in, const SourceFile& file) {
 }  // namespace
 
 ast::NodePtr parse_file(const SourceFile& file) {
+    check_sdl_text(file);
     Input in(file.text.data(), file.text.data() + file.text.size(), file.name.c_str());
     return run<rules::file>(in, file);
 }

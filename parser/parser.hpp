@@ -8,7 +8,8 @@
 
 namespace lumen::parser {
 
-// Parses a whole file into a Body node. Throws LumenError at the first syntax error.
+// Parses a whole file into a Body node. Throws LumenError at the first syntax error, also
+// for a binary or UTF-16 file (text_encoding.hpp).
 // Nesting (parentheses, vectors, blocks, directives, unary operators) deeper than
 // kMaxNesting gives a LumenError instead of a stack overflow.
 ast::NodePtr parse_file(const SourceFile& file);

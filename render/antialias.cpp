@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/stop_request.hpp"
 #include "render/jitter.hpp"
 
 namespace lumen::render {
@@ -60,6 +61,7 @@ BlockRenderer::BlockRenderer(const Tracer& tracer, const CameraModel& camera,
 
 Sample BlockRenderer::sample(double x, double y, ThreadState& state,
                              uint64_t& primary_rays) const {
+    throw_if_stop_requested();  // SIGINT/SIGTERM: the render unwinds within a sample
     ++primary_rays;
     const RayColour c = tracer_.trace_primary(camera_.ray(x, y), state);
     return {c.rgb, c.transmit};

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/diagnostics.hpp"
+#include "base/stop_request.hpp"
 #include "render/camera.hpp"
 #include "render/lights.hpp"
 #include "render/radiosity/ray_cast.hpp"
@@ -35,6 +36,7 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn) {
     const size_t workers = std::max<size_t>(1, std::min<size_t>(size_t(std::max(threads, 1)), n));
+    throw_if_stop_requested();  // SIGINT/SIGTERM: also polled before each chunk below
     if (workers <= 1) {
         fn(0, n);
         return;
@@ -45,8 +47,10 @@ void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t
     std::mutex failure_mutex;
     auto work = [&] {
         try {
-            for (size_t b = next.fetch_add(chunk); b < n; b = next.fetch_add(chunk))
+            for (size_t b = next.fetch_add(chunk); b < n; b = next.fetch_add(chunk)) {
+                throw_if_stop_requested();
                 fn(b, std::min(n, b + chunk));
+            }
         } catch (...) {
             std::lock_guard lock(failure_mutex);
             if (!failure) failure = std::current_exception();

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Usage: tests/fuzz/run.sh FUZZER [SECONDS]
-# Runs the libFuzzer target for SECONDS (default 600), seeded from tests/sdl/*.pov and
-# examples/*.pov. The corpus grows in <fuzzer dir>/fuzz-corpus; crashes, timeouts and
-# out-of-memory inputs are saved in <fuzzer dir>/fuzz-artifacts.
+# Runs the libFuzzer target for SECONDS (default 600), seeded from tests/sdl/*.pov,
+# examples/*.pov and tests/fuzz/regressions/ (its earlier findings). The corpus grows in
+# <fuzzer dir>/fuzz-corpus; crashes, timeouts and out-of-memory inputs are saved in
+# <fuzzer dir>/fuzz-artifacts (copy each into tests/fuzz/regressions/ once fixed).
 set -euo pipefail
 fuzzer=$(realpath "${1:?usage: tests/fuzz/run.sh FUZZER [SECONDS]}")
 seconds=${2:-600}
@@ -14,7 +15,7 @@ artifacts=$dir/fuzz-artifacts
 work=$dir/fuzz-work  # the current folder for scenes that #write or #fopen files
 mkdir -p "$corpus" "$seeds" "$artifacts" "$work"
 rm -f "$seeds"/*
-for f in "$root"/tests/sdl/*.pov "$root"/examples/*.pov; do
+for f in "$root"/tests/sdl/*.pov "$root"/examples/*.pov "$root"/tests/fuzz/regressions/*; do
     [ -e "$f" ] && cp "$f" "$seeds/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
 cd "$work"
