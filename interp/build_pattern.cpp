@@ -116,6 +116,11 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
         read_warp(cur, *warp, pattern);
         return true;
     }
+    if (kw.kind == Item::Kind::Value && kw.value.is<scene::Unsupported>()) {
+        // image_map { }, bump_map { }, slope { }, pigment_pattern { }, ...
+        mark_unsupported(pattern, kw.value.as<scene::Unsupported>().feature, kw.loc);
+        return true;
+    }
     if (kw.kind == Item::Kind::Value && (kw.value.is<std::shared_ptr<const FunctionValue>>() ||
                                          kw.value.is<scene::ObjectPtr>())) {
         // function { } / object { } patterns

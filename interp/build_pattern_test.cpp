@@ -140,5 +140,16 @@ TEST_F(BuildPattern, EveryWarpTypeIsReadAndReportedUnsupported) {
     EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { repeat x+y } } }"), "no error");
 }
 
+// Blocks lumen does not build (image_map, slope { }, ...) mark the pattern they stand in.
+TEST_F(BuildPattern, UnbuiltBlocksMarkThePattern) {
+    const scene::Scene s = run(
+        "sphere { 0, 1 pigment { image_map { png \"a.png\" } } }\n"
+        "sphere { 0, 1 texture { slope { -z altitude z } texture_map { [0 pigment { rgb 1 }] } } }");
+    ASSERT_EQ(s.unsupported.size(), 2u);
+    EXPECT_EQ(s.unsupported[0].feature, "image_map");
+    EXPECT_EQ(s.unsupported[1].feature, "slope");
+    EXPECT_EQ(s.unsupported[1].loc.line, 2u);
+}
+
 }  // namespace
 }  // namespace lumen::interp::testing
