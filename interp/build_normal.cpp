@@ -43,7 +43,7 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
         if (item.kind == Item::Kind::Keyword) {
             const std::string& w = item.keyword;
             if (w == "bump_size") { n.amount = cur.expect_float(w); continue; }
-            if (w == "no_bump_scale") { cur.optional_bool(); continue; }
+            if (w == "no_bump_scale") { n.no_bump_scale = cur.optional_bool(); continue; }
             if (w == "accuracy") { n.accuracy = cur.expect_float(w); continue; }
             if (w == "normal_map") {
                 n.normal_map = cur.expect<std::shared_ptr<const NormalMapValue>>(w, "a normal_map")->entries;

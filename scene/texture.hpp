@@ -59,6 +59,7 @@ struct Normal {
     Pattern pattern;                 // Plain = no perturbation
     double amount = 0.5;             // bump size
     double accuracy = 0.02;          // sampling distance of the pattern's slope
+    bool no_bump_scale = false;      // bump_size not scaled with the object
     NormalMap normal_map;            // normal_map, or the list form `checker normal{A} ...`
     SourceLoc loc;
 };
