@@ -19,12 +19,13 @@ const std::vector<std::string> kData = {
     "reflection", "irid", "radiosity", "vertex_vectors", "normal_vectors", "uv_vectors",
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
     "looks_like", "projected_through", "global_settings", "background", "interior_texture",
-    "default"};  // `default { }`: the old spelling of #default
+    "default",   // `default { }`: the old spelling of #default
+    "warp"};     // read by the pattern it modifies (build_warp.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
-    "subsurface", "warp", "image_map", "bump_map", "material_map", "image_pattern",
+    "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
     "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
@@ -43,7 +44,7 @@ void collect(const scene::Pattern& p, std::vector<scene::Unsupported>& out) {
 void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     if (!p) return;
     collect(p->pattern, out);
-    for (const auto& e : p->pigment_map) collect(e.pigment, out);
+    for (const auto& e : p->pigment_map) collect(e.item, out);
 }
 void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported>& out) {
     for (const auto& t : layers) {
@@ -52,7 +53,7 @@ void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported
         collect(t->pigment, out);
         if (t->finish && t->finish->unsupported) out.push_back(*t->finish->unsupported);
         if (t->normal) collect(t->normal->pattern, out);
-        for (const auto& e : t->texture_map) collect(e.texture, out);
+        for (const auto& e : t->texture_map) collect(e.item, out);
     }
 }
 void collect(const scene::ObjectPtr& o, std::vector<scene::Unsupported>& out) {

@@ -21,7 +21,8 @@ bool read_transform(ItemCursor& cur, const Item& kw, scene::Transform& out);
 const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
-// Patterns move with everything written after them (POV-Ray 3.7's rules).
+// Patterns move with everything written after them: a transform appends to the pattern's
+// steps, also in every map entry below it (POV-Ray transforms a whole pigment or texture).
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
@@ -40,12 +41,21 @@ bool is_list_pattern_word(const Item& item);
 bool is_pattern_word(const Item& item);  // checker, bozo, gradient, ...
 const std::vector<std::string>& pattern_keywords();
 void mark_unsupported(scene::Pattern& pattern, const std::string& feature, SourceLoc loc);
+// The arguments after a pattern keyword (`gradient <v>`, `mandel 25`), read into its kind
+// (build_pattern_kinds.cpp).
+void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pattern);
+// A modifier that belongs to some kinds (`mortar`, `metric`, ...): read into the pattern's
+// kind, or an error when the kind does not take it. False when `kw` is no such modifier.
+bool read_pattern_kind_modifier(ItemCursor& cur, const Item& kw, scene::Pattern& pattern);
+const std::vector<std::string>& pattern_kind_keywords();
+// `warp { ... }`: appends the warp to the pattern's steps (build_warp.cpp).
+void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern);
 
 // ---- maps (build_maps.cpp) ------------------------------------------------------------------
 scene::ColourMap build_colour_map(ItemCursor& cur);
-std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur);
-std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur);
-std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur);
+scene::PigmentMap build_pigment_map(ItemCursor& cur);
+scene::TextureMap build_texture_map(ItemCursor& cur);
+scene::NormalMap build_normal_map(ItemCursor& cur);
 
 // ---- materials (build_pigment/texture/finish/normal/interior/material.cpp) -------------------
 // `base`: the pigment/normal the block edits (see edit_pigment); null = the #default one.

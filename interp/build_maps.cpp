@@ -50,24 +50,24 @@ scene::ColourMap build_colour_map(ItemCursor& cur) {
     return out;
 }
 
-std::vector<scene::Pigment::MapEntry> build_pigment_map(ItemCursor& cur) {
-    std::vector<scene::Pigment::MapEntry> out;
+scene::PigmentMap build_pigment_map(ItemCursor& cur) {
+    scene::PigmentMap out;
     read_entries<PigmentMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_pigment(e)});
     });
     return out;
 }
 
-std::vector<scene::Texture::MapEntry> build_texture_map(ItemCursor& cur) {
-    std::vector<scene::Texture::MapEntry> out;
+scene::TextureMap build_texture_map(ItemCursor& cur) {
+    scene::TextureMap out;
     read_entries<TextureMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_texture(e)});
     });
     return out;
 }
 
-std::vector<std::pair<double, scene::NormalPtr>> build_normal_map(ItemCursor& cur) {
-    std::vector<std::pair<double, scene::NormalPtr>> out;
+scene::NormalMap build_normal_map(ItemCursor& cur) {
+    scene::NormalMap out;
     read_entries<NormalMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_normal(e)});
     });

@@ -15,15 +15,15 @@ TEST_F(BuildMaterial, PigmentColourAndIdent) {
 
 TEST_F(BuildMaterial, CheckerListFormWithColoursAndPigments) {
     scene::Texture t = texture_of("sphere { 0, 1 pigment { checker rgb 1, rgb <1,0,0> } }");
-    EXPECT_EQ(t.pigment->pattern.type, scene::PatternType::Checker);
+    EXPECT_EQ(t.pigment->pattern.type(), scene::PatternType::Checker);
     EXPECT_TRUE(t.pigment->list_form);
     ASSERT_EQ(t.pigment->colour_map.size(), 2u);
     EXPECT_DOUBLE_EQ(t.pigment->colour_map[1].value, 1);
-    EXPECT_EQ(t.pigment->colour_map[1].colour, (scene::Colour{1, 0, 0, 0, 0}));
+    EXPECT_EQ(t.pigment->colour_map[1].item, (scene::Colour{1, 0, 0, 0, 0}));
     scene::Texture p = texture_of(
         "sphere { 0, 1 pigment { hexagon pigment { rgb 1 } pigment { checker } rgb 0.5 } }");
     ASSERT_EQ(p.pigment->pigment_map.size(), 3u);
-    EXPECT_EQ(p.pigment->pigment_map[1].pigment->pattern.type, scene::PatternType::Checker);
+    EXPECT_EQ(p.pigment->pigment_map[1].item->pattern.type(), scene::PatternType::Checker);
 }
 
 TEST_F(BuildMaterial, GradientColourMapInWrittenOrder) {
@@ -31,7 +31,7 @@ TEST_F(BuildMaterial, GradientColourMapInWrittenOrder) {
         "sphere { 0, 1 pigment { gradient <0,2,0> color_map { [0.5 rgb 1] [0.2 rgb 0] "
         "[0.9 rgb <1,0,0>] } frequency 2 phase 0.1 sine_wave } }");
     const scene::Pigment& p = *t.pigment;
-    expect_vec(p.pattern.gradient, {0, 1, 0});
+    expect_vec(std::get<scene::pattern::Gradient>(p.pattern.kind).direction, {0, 1, 0});
     ASSERT_EQ(p.colour_map.size(), 3u);
     EXPECT_DOUBLE_EQ(p.colour_map[0].value, 0.5);
     EXPECT_DOUBLE_EQ(p.colour_map[1].value, 0.2);
@@ -45,21 +45,21 @@ TEST_F(BuildMaterial, OldColourMapBandForm) {
         "sphere { 0, 1 pigment { onion color_map { [0 0.5 color rgb 1 color rgb 0] } } }");
     ASSERT_EQ(t.pigment->colour_map.size(), 2u);
     EXPECT_DOUBLE_EQ(t.pigment->colour_map[1].value, 0.5);
-    EXPECT_EQ(t.pigment->colour_map[1].colour, (scene::Colour{0, 0, 0, 0, 0}));
+    EXPECT_EQ(t.pigment->colour_map[1].item, (scene::Colour{0, 0, 0, 0, 0}));
 }
 
 TEST_F(BuildMaterial, PigmentTransformMovesOnlyThePattern) {
     scene::ObjectPtr o = first_object("sphere { 0, 1 pigment { checker scale 2 } }");
     EXPECT_TRUE(o->transform.is_identity());
-    expect_vec(o->texture[0]->pigment->pattern.transform.point({1, 1, 1}), {2, 2, 2});
+    expect_vec(o->texture[0]->pigment->pattern.steps.composed_transform().point({1, 1, 1}), {2, 2, 2});
 }
 
 TEST_F(BuildMaterial, NoisePatternsAndTurbulenceAreUnsupported) {
     scene::Texture t = texture_of("sphere { 0, 1 pigment { bozo turbulence 0.5 } }");
-    EXPECT_EQ(t.pigment->pattern.type, scene::PatternType::Bozo);
+    EXPECT_EQ(t.pigment->pattern.type(), scene::PatternType::Bozo);
     ASSERT_TRUE(t.pigment->pattern.unsupported.has_value());
     EXPECT_EQ(t.pigment->pattern.unsupported->feature, "pattern 'bozo'");
-    expect_vec(t.pigment->pattern.turbulence, {0.5, 0.5, 0.5});
+    expect_vec(t.pigment->pattern.steps.classic_turbulence()->amount, {0.5, 0.5, 0.5});
     scene::Texture g = texture_of("sphere { 0, 1 pigment { checker turbulence 0.2 } }");
     EXPECT_EQ(g.pigment->pattern.unsupported->feature, "turbulence");
 }
@@ -136,7 +136,7 @@ TEST_F(BuildMaterial, ObsoleteFinishIorIsKept) {
 
 TEST_F(BuildMaterial, NormalPatternRecordedAsUnsupported) {
     scene::Texture t = texture_of("sphere { 0, 1 normal { bumps 0.4 scale 0.2 } }");
-    EXPECT_EQ(t.normal->pattern.type, scene::PatternType::Bumps);
+    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Bumps);
     EXPECT_DOUBLE_EQ(t.normal->amount, 0.4);
     EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'bumps'");
 }
@@ -159,14 +159,14 @@ TEST_F(BuildMaterial, CheckerTexturesAndTextureMap) {
         "sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }] "
         "[1 pigment { rgb 0 } finish { phong 1 }] } } }");
     ASSERT_EQ(m.texture_map.size(), 2u);
-    EXPECT_DOUBLE_EQ(m.texture_map[1].texture[0]->finish->phong, 1);
+    EXPECT_DOUBLE_EQ(m.texture_map[1].item[0]->finish->phong, 1);
 }
 
 TEST_F(BuildMaterial, PigmentMap) {
     scene::Texture t = texture_of(
         "sphere { 0, 1 pigment { radial pigment_map { [0 rgb 1] [1 checker rgb 0, rgb 1] } } }");
     ASSERT_EQ(t.pigment->pigment_map.size(), 2u);
-    EXPECT_EQ(t.pigment->pigment_map[1].pigment->pattern.type, scene::PatternType::Checker);
+    EXPECT_EQ(t.pigment->pigment_map[1].item->pattern.type(), scene::PatternType::Checker);
 }
 
 TEST_F(BuildMaterial, InteriorAndMaterial) {

@@ -47,7 +47,7 @@ void change_top_texture(ItemCursor& cur, const Item& item, scene::Object& obj,
                         const Change& change) {
     if (obj.texture.empty()) obj.texture.push_back(default_texture(cur.ctx(), item.loc));
     auto top = std::make_shared<scene::Texture>(*obj.texture.back());
-    if (top->pattern.type != scene::PatternType::Plain)
+    if (!top->pattern.is_plain())
         cur.fail(item.loc, "cannot add " + describe_item(item) + " to a patterned texture");
     change(*top);
     obj.texture.back() = top;

@@ -26,12 +26,16 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
     n.loc = cur.block_loc();
     while (!cur.at_end()) {
         const Item& item = cur.next();
-        // Normal maps and list entries (`checker normal{A} normal{B}`) only matter once normal
-        // patterns are rendered; the pattern's unsupported mark records them.
-        if (item.kind == Item::Kind::Value &&
-            (item.value.is<std::shared_ptr<const NormalMapValue>>() ||
-             item.value.is<scene::NormalPtr>()))
+        // Normal maps and list entries (`checker normal{A} normal{B}`, valued 0, 1, ...) are
+        // kept; they render once normal patterns do (the pattern's unsupported mark).
+        if (item.kind == Item::Kind::Value && item.value.is<std::shared_ptr<const NormalMapValue>>()) {
+            n.normal_map = item.value.as<std::shared_ptr<const NormalMapValue>>()->entries;
             continue;
+        }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::NormalPtr>()) {
+            n.normal_map.push_back({double(n.normal_map.size()), item.value.as<scene::NormalPtr>()});
+            continue;
+        }
         if (item.kind == Item::Kind::Value && item.value.is<double>()) {  // `bumps 0.5`
             n.amount = item.value.as<double>();
             continue;
@@ -39,9 +43,10 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
         if (item.kind == Item::Kind::Keyword) {
             const std::string& w = item.keyword;
             if (w == "bump_size") { n.amount = cur.expect_float(w); continue; }
-            if (w == "no_bump_scale") { cur.optional_bool(); continue; }
+            if (w == "no_bump_scale") { n.no_bump_scale = cur.optional_bool(); continue; }
+            if (w == "accuracy") { n.accuracy = cur.expect_float(w); continue; }
             if (w == "normal_map") {
-                cur.expect<std::shared_ptr<const NormalMapValue>>(w, "a normal_map");
+                n.normal_map = cur.expect<std::shared_ptr<const NormalMapValue>>(w, "a normal_map")->entries;
                 continue;
             }
         }

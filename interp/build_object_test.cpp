@@ -92,14 +92,14 @@ TEST_F(BuildObject, TextureBeforeTransformMovesWithObject) {
     ASSERT_EQ(o->texture.size(), 1u);
     // The second pigment block edits the first, which moved with the object (POV-Ray 3.7 does
     // the same: checked on a render with povray).
-    expect_vec(o->texture[0]->pigment->pattern.transform.point({0, 0, 0}), {5, 0, 0});
+    expect_vec(o->texture[0]->pigment->pattern.steps.composed_transform().point({0, 0, 0}), {5, 0, 0});
     scene::ObjectPtr q = first_object(
         "#declare P = pigment { checker }\n"
         "sphere { 0, 1 pigment { checker } translate x*5 pigment { P } }");
     // A block that starts from a declared pigment replaces the one there.
-    EXPECT_TRUE(q->texture[0]->pigment->pattern.transform.is_identity());
+    EXPECT_TRUE(q->texture[0]->pigment->pattern.steps.composed_transform().is_identity());
     scene::ObjectPtr p = first_object("sphere { 0, 1 pigment { checker } translate x*5 }");
-    expect_vec(p->texture[0]->pigment->pattern.transform.point({0, 0, 0}), {5, 0, 0});
+    expect_vec(p->texture[0]->pigment->pattern.steps.composed_transform().point({0, 0, 0}), {5, 0, 0});
 }
 
 TEST_F(BuildObject, FlagsAndModifiers) {
@@ -137,7 +137,7 @@ TEST_F(BuildObject, CsgTransformMovesChildTextures) {
     scene::ObjectPtr o = first_object(
         "union { sphere { 0, 1 pigment { checker } } sphere { x, 1 } translate z*3 }");
     const auto& child = *std::get<scene::Csg>(o->shape).children[0];
-    expect_vec(child.texture[0]->pigment->pattern.transform.point({0, 0, 0}), {0, 0, 3});
+    expect_vec(child.texture[0]->pigment->pattern.steps.composed_transform().point({0, 0, 0}), {0, 0, 3});
 }
 
 TEST_F(BuildObject, LayeredTexturesStack) {

@@ -18,7 +18,7 @@ const std::vector<std::string>& pigment_keywords() {
 
 // `checker Red, White` / `hexagon pigment{A} pigment{B} pigment{C}`: entry i has value i.
 void read_list_form(ItemCursor& cur, scene::Pigment& p) {
-    int n = pattern_list_size(p.pattern.type);
+    int n = pattern_list_size(p.pattern.type());
     std::vector<scene::PigmentPtr> pigments;
     bool all_colours = true;
     for (int i = 0; i < n; ++i) {
@@ -59,7 +59,7 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
     p.loc = cur.block_loc();
     while (!cur.at_end()) {
         if (cur.next_is_colour_start()) {
-            p.pattern.type = scene::PatternType::Plain;
+            p.pattern.kind = scene::pattern::Plain{};
             p.colour = cur.expect_colour("");
             continue;
         }

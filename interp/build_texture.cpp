@@ -18,7 +18,7 @@ const std::vector<std::string>& texture_keywords() {
 
 // `checker texture{A} texture{B}`: entry i has value i.
 void read_list_form(ItemCursor& cur, scene::Texture& tex) {
-    int n = pattern_list_size(tex.pattern.type);
+    int n = pattern_list_size(tex.pattern.type());
     for (int i = 0; i < n && cur.next_is<std::shared_ptr<const TextureValue>>(); ++i) {
         tex.texture_map.push_back(
             {double(i), cur.next().value.as<std::shared_ptr<const TextureValue>>()->layers});

@@ -126,15 +126,16 @@ Transform build_transform_block(ItemCursor& cur) {
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     if (!p) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
-    copy->pattern.transform = copy->pattern.transform.then(t);
-    for (auto& e : copy->pigment_map) e.pigment = transformed(e.pigment, t);
+    copy->pattern.steps.add_transform(t);
+    for (auto& e : copy->pigment_map) e.item = transformed(e.item, t);
     return copy;
 }
 
 scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
     if (!n) return n;
     auto copy = std::make_shared<scene::Normal>(*n);
-    copy->pattern.transform = copy->pattern.transform.then(t);
+    copy->pattern.steps.add_transform(t);
+    for (auto& e : copy->normal_map) e.item = transformed(e.item, t);
     return copy;
 }
 
@@ -143,8 +144,8 @@ scene::TexturePtr transformed(const scene::TexturePtr& tex, const Transform& t) 
     auto copy = std::make_shared<scene::Texture>(*tex);
     copy->pigment = transformed(copy->pigment, t);
     copy->normal = transformed(copy->normal, t);
-    copy->pattern.transform = copy->pattern.transform.then(t);
-    for (auto& e : copy->texture_map) e.texture = transformed(e.texture, t);
+    copy->pattern.steps.add_transform(t);
+    for (auto& e : copy->texture_map) e.item = transformed(e.item, t);
     return copy;
 }
 

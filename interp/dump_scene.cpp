@@ -3,36 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "interp/dump_pattern.hpp"
+
 namespace lumen::interp {
 
 namespace {
 
-// A tiny JSON tree: built in key order, then printed.
-// Object members are two parallel vectors (keys, values): a vector of pair<string, Json>
-// needs Json complete, which clang's libstdc++ checks refuse.
-struct Json {
-    enum class Kind { Number, String, Bool, Array, Object } kind = Kind::Object;
-    double number = 0;
-    std::string text;
-    bool flag = false;
-    std::vector<Json> items;                             // Array
-    std::vector<std::string> keys;                      // Object
-    std::vector<Json> values;                           // Object, parallel to keys
-
-    static Json num(double v) { Json j; j.kind = Kind::Number; j.number = v; return j; }
-    static Json str(std::string s) { Json j; j.kind = Kind::String; j.text = std::move(s); return j; }
-    static Json boolean(bool b) { Json j; j.kind = Kind::Bool; j.flag = b; return j; }
-    static Json array() { Json j; j.kind = Kind::Array; return j; }
-
-    bool empty() const { return kind == Kind::Object ? keys.empty() : kind == Kind::Array && items.empty(); }
-    bool scalar() const { return kind != Kind::Array && kind != Kind::Object; }
-    Json& put(const std::string& key, Json v) {
-        keys.push_back(key);
-        values.push_back(std::move(v));
-        return *this;
-    }
-    Json& push(Json v) { items.push_back(std::move(v)); return *this; }
-};
+using namespace dump;
 
 std::string format_number(double v) {
     if (std::isnan(v)) return "\"nan\"";
@@ -93,101 +70,6 @@ void print(const Json& j, int indent, std::string& out) {
 
 // ---- values ---------------------------------------------------------------------------------
 
-Json vec(const glm::dvec3& v) { return Json::array().push(Json::num(v.x)).push(Json::num(v.y)).push(Json::num(v.z)); }
-
-Json colour(const scene::Colour& c) {
-    Json a = Json::array();
-    for (double v : {c.r, c.g, c.b, c.f, c.t}) a.push(Json::num(v));
-    return a;
-}
-
-std::string loc_text(const SourceLoc& loc) {
-    if (!loc.file) return loc.str();
-    std::string name = loc.file->name;
-    size_t slash = name.find_last_of('/');
-    if (slash != std::string::npos) name = name.substr(slash + 1);
-    return name + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column);
-}
-
-Json unsupported_text(const scene::Unsupported& u) {
-    return Json::str(u.feature + " (" + loc_text(u.loc) + ")");
-}
-
-// Puts `key` only when the value differs from the default.
-void put_if(Json& o, const std::string& key, double v, double def) {
-    if (v != def) o.put(key, Json::num(v));
-}
-void put_if(Json& o, const std::string& key, bool v, bool def) {
-    if (v != def) o.put(key, Json::boolean(v));
-}
-void put_if(Json& o, const std::string& key, const glm::dvec3& v, const glm::dvec3& def) {
-    if (v != def) o.put(key, vec(v));
-}
-void put_if(Json& o, const std::string& key, const scene::Colour& v, const scene::Colour& def) {
-    if (!(v == def)) o.put(key, colour(v));
-}
-void put_nonempty(Json& o, const std::string& key, Json v) {
-    if (!v.empty()) o.put(key, std::move(v));
-}
-
-Json transform(const scene::Transform& t) {
-    Json rows = Json::array();
-    for (int r = 0; r < 3; ++r) {
-        Json row = Json::array();
-        for (int c = 0; c < 4; ++c) row.push(Json::num(t.m[c][r]));
-        rows.push(row);
-    }
-    return rows;
-}
-void put_transform(Json& o, const scene::Transform& t) {
-    if (!t.is_identity()) o.put("transform", transform(t));
-}
-
-const char* pattern_name(scene::PatternType t) {
-    static const char* names[] = {
-        "plain", "checker", "gradient", "planar", "radial", "onion", "spherical", "cylindrical",
-        "brick", "boxed", "hexagon", "square", "triangular", "agate", "bozo", "bumps", "crackle",
-        "dents", "granite", "leopard", "marble", "ripples", "spotted", "waves", "wood",
-        "wrinkles", "quilted", "other"};
-    return names[static_cast<int>(t)];
-}
-
-const char* wave_name(scene::WaveType w) {
-    static const char* names[] = {"ramp", "sine", "triangle", "scallop", "cubic", "poly"};
-    return names[static_cast<int>(w)];
-}
-
-Json pattern(const scene::Pattern& p) {
-    const scene::Pattern d;
-    Json o;
-    if (p.type != d.type) o.put("type", Json::str(pattern_name(p.type)));
-    put_if(o, "gradient", p.gradient, d.gradient);
-    put_if(o, "brick_size", p.brick_size, d.brick_size);
-    put_if(o, "mortar", p.mortar, d.mortar);
-    put_if(o, "frequency", p.frequency, d.frequency);
-    put_if(o, "phase", p.phase, d.phase);
-    if (p.wave != d.wave) o.put("wave", Json::str(wave_name(p.wave)));
-    put_if(o, "wave_exponent", p.wave_exponent, d.wave_exponent);
-    put_if(o, "turbulence", p.turbulence, d.turbulence);
-    put_if(o, "octaves", double(p.octaves), double(d.octaves));
-    put_if(o, "omega", p.omega, d.omega);
-    put_if(o, "lambda", p.lambda, d.lambda);
-    if (p.type != scene::PatternType::Plain) put_transform(o, p.transform);  // else unused
-    if (p.unsupported) o.put("unsupported", unsupported_text(*p.unsupported));
-    return o;
-}
-
-Json colour_map(const scene::ColourMap& m) {
-    Json a = Json::array();
-    for (const auto& e : m) {
-        Json row = Json::array().push(Json::num(e.value));
-        for (double v : {e.colour.r, e.colour.g, e.colour.b, e.colour.f, e.colour.t})
-            row.push(Json::num(v));
-        a.push(row);
-    }
-    return a;
-}
-
 Json pigment(const scene::Pigment& p) {
     const scene::Pigment d;
     Json o;
@@ -198,7 +80,7 @@ Json pigment(const scene::Pigment& p) {
     for (const auto& e : p.pigment_map) {
         Json entry;
         entry.put("value", Json::num(e.value));
-        if (e.pigment) entry.put("pigment", pigment(*e.pigment));
+        if (e.item) entry.put("pigment", pigment(*e.item));
         pm.push(entry);
     }
     put_nonempty(o, "pigment_map", pm);
@@ -253,7 +135,7 @@ Json texture(const scene::Texture& t) {
     for (const auto& e : t.texture_map) {
         Json entry;
         entry.put("value", Json::num(e.value));
-        entry.put("texture", layered(e.texture));
+        entry.put("texture", layered(e.item));
         tm.push(entry);
     }
     put_nonempty(o, "texture_map", tm);

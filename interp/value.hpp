@@ -37,9 +37,9 @@ struct MaterialValue {
     scene::Transform transform;
 };
 struct ColourMapValue { scene::ColourMap entries; };
-struct PigmentMapValue { std::vector<scene::Pigment::MapEntry> entries; };
-struct TextureMapValue { std::vector<scene::Texture::MapEntry> entries; };
-struct NormalMapValue { std::vector<std::pair<double, scene::NormalPtr>> entries; };
+struct PigmentMapValue { scene::PigmentMap entries; };
+struct TextureMapValue { scene::TextureMap entries; };
+struct NormalMapValue { scene::NormalMap entries; };
 
 struct Value {
     using Variant = std::variant<

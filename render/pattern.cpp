@@ -1,11 +1,11 @@
-// Non-noise pattern functions. Formulas follow the POV-Ray 3.7 reference manual; the block
-// patterns' layouts (brick offsets, hexagon/square colour placement) were matched pixel by
-// pixel against povray 3.7 renders.
+// Pattern dispatch: world point -> pattern space through the transforms and warps, the kind's
+// raw value (render/pattern_kinds.cpp), then frequency, phase and wave for continuous kinds.
 #include "render/pattern.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "render/pattern_kinds.hpp"
 
 namespace lumen::render {
 namespace {
@@ -13,106 +13,32 @@ namespace {
 using scene::Colour;
 using scene::PatternType;
 
-constexpr double kEpsilon = 1e-10;
+template <class... F> struct Overloaded : F... { using F::operator()...; };
+template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
-double checker(const glm::dvec3& p) {
-    const long s = long(std::floor(p.x + kEpsilon)) + long(std::floor(p.y + kEpsilon)) +
-                   long(std::floor(p.z + kEpsilon));
-    return double(s & 1);
+// The steps act on the pattern first to last, so a world point goes through them last to
+// first. Warps (and turbulence with an amount) are the noise issue's: the interp reports a
+// pattern that has them unsupported, so they never reach a render and leave the point as is.
+glm::dvec3 to_pattern_space(const scene::PatternSteps& steps, glm::dvec3 p) {
+    for (auto it = steps.steps.rbegin(); it != steps.steps.rend(); ++it)
+        std::visit(Overloaded{[&](const scene::Transform& t) {
+                                  if (!t.is_identity()) p = t.inv_point(p);
+                              },
+                              [](const auto&) {}},
+                   *it);
+    return p;
 }
 
-double gradient(const scene::Pattern& pat, const glm::dvec3& p) {
-    double v = p.x * pat.gradient.x + p.y * pat.gradient.y + p.z * pat.gradient.z;
-    if (v > 1) v = std::fmod(v, 1.0);
-    return v;
-}
-
-double radial(const glm::dvec3& p) {
-    // 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y).
-    return std::atan2(-p.z, p.x) / (2 * std::numbers::pi);
-}
-
-double wrap_mod(double v, double m) { return v - std::floor(v / m) * m; }
-
-// Mortar (0) surrounds each brick (1); odd rows shift x by half a brick, even rows shift z.
-double brick(const scene::Pattern& pat, glm::dvec3 p) {
-    const glm::dvec3 size = pat.brick_size;
-    const double mortar = pat.mortar;
-    p += glm::dvec3(kEpsilon);
-    const double row = std::floor(p.y / size.y);
-    if (std::fmod(row, 2.0) != 0)
-        p.x += size.x / 2;
-    else
-        p.z += size.z / 2;
-    const double xr = wrap_mod(p.x, size.x), yr = p.y - row * size.y, zr = wrap_mod(p.z, size.z);
-    const bool in_mortar = xr >= size.x - mortar || yr >= size.y - mortar || zr >= size.z - mortar;
-    return in_mortar ? 0.0 : 1.0;
-}
-
-// Hexagons of side 1 in the xz plane centred on a triangular lattice with basis
-// a = (0, √3) and b = (1.5, √3/2); cell i·a + j·b gets colour (i − j) mod 3, which puts
-// colour 0 at the origin, colour 1 in +z and colour 2 on either side.
-double hexagon(const glm::dvec3& p) {
-    const double s3 = std::sqrt(3.0);
-    const double jf = p.x / 1.5;
-    const double j0 = std::floor(jf);
-    double best = 1e300;
-    long bi = 0, bj = 0;
-    for (long j = long(j0); j <= long(j0) + 1; ++j) {
-        const double i0 = std::floor((p.z - j * s3 / 2) / s3);
-        for (long i = long(i0); i <= long(i0) + 1; ++i) {
-            const double cx = 1.5 * j, cz = i * s3 + j * s3 / 2;
-            const double d = (p.x - cx) * (p.x - cx) + (p.z - cz) * (p.z - cz);
-            if (d < best) best = d, bi = i, bj = j;
-        }
-    }
-    return double(((bi - bj) % 3 + 3) % 3);
-}
-
-// Unit squares in the xz plane; the four colours tile a 2x2 block.
-double square(const glm::dvec3& p) {
-    const long a = long(std::floor(p.x)) & 1, b = long(std::floor(p.z)) & 1;
-    return double(2 * (1 - b) + (a ^ b));
-}
-
-long mod3(double v) { return ((long(v) % 3) + 3) % 3; }
-
-// Equilateral triangles of side 1 in the xz plane, in bands of height √3/2 whose upward
-// triangles alternate between half-integer and integer centres; six colours meet at every
-// vertex. Layout matched pixel by pixel against povray 3.7.
-double triangular(const glm::dvec3& p) {
-    const double h = std::sqrt(3.0) / 2;
-    const double band = std::floor(p.z / h);
-    const double v = p.z / h - band;  // 0 at the band's bottom edge
-    const double half_width = (1 - v) / 2;  // of the upward triangle at this height
-    const double fl = std::floor(p.x), nearest = std::floor(p.x + 0.5);
-    static constexpr int even_up[3] = {2, 4, 0}, even_down[3] = {1, 5, 3};
-    static constexpr int odd_up[3] = {4, 0, 2}, odd_down[3] = {3, 1, 5};
-    if (std::fmod(std::fabs(band), 2.0) == 0) {
-        if (std::fabs(p.x - (fl + 0.5)) < half_width) return even_up[mod3(fl)];
-        return even_down[mod3(nearest)];
-    }
-    if (std::fabs(p.x - nearest) < half_width) return odd_up[mod3(nearest)];
-    return odd_down[mod3(fl)];
-}
-
-double raw_value(const scene::Pattern& pat, const glm::dvec3& p) {
-    switch (pat.type) {
-        case PatternType::Checker: return checker(p);
-        case PatternType::Gradient: return gradient(pat, p);
-        case PatternType::Planar: return 1.0 - std::min(1.0, std::fabs(p.y));
-        case PatternType::Radial: return radial(p);
-        case PatternType::Onion: return std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
-        case PatternType::Spherical: return 1.0 - std::min(1.0, glm::length(p));
-        case PatternType::Cylindrical: return 1.0 - std::min(1.0, std::sqrt(p.x * p.x + p.z * p.z));
-        case PatternType::Boxed:
-            return 1.0 - std::min(1.0, std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
-        case PatternType::Brick: return brick(pat, p);
-        case PatternType::Hexagon: return hexagon(p);
-        case PatternType::Square: return square(p);
-        case PatternType::Triangular: return triangular(p);
-        default: return 0.0;  // Plain, noise-based and unsupported patterns
-    }
+double raw_value(const scene::PatternKind& kind, const glm::dvec3& p) {
+    return std::visit(
+        [&](const auto& k) -> double {
+            using Kind = std::decay_t<decltype(k)>;
+            if constexpr (scene::PatternTraits<Kind>::info.rendered)
+                return evaluate(k, p);
+            else
+                return 0.0;  // reported unsupported by the interp: never rendered
+        },
+        kind);
 }
 
 double apply_wave(const scene::Pattern& pat, double v) {
@@ -128,57 +54,68 @@ double apply_wave(const scene::Pattern& pat, double v) {
     return v;
 }
 
+Colour rgb(double r, double g, double b) { return {r, g, b, 0, 0}; }
+
+// The default colour maps, one per name used in the table's default_map column.
+const scene::ColourMap& grey_ramp_map() {
+    static const scene::ColourMap m{{0, rgb(0, 0, 0)}, {1, rgb(1, 1, 1)}};
+    return m;
+}
+const scene::ColourMap& checker_map() {
+    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}};
+    return m;
+}
+const scene::ColourMap& brick_map() {
+    static const scene::ColourMap m{{0, rgb(0.5, 0.5, 0.5)}, {1, rgb(0.6, 0.15, 0.15)}};
+    return m;
+}
+const scene::ColourMap& hexagon_map() {
+    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)}};
+    return m;
+}
+const scene::ColourMap& square_map() {
+    static const scene::ColourMap m{
+        {0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)}, {3, rgb(1, 1, 0)}};
+    return m;
+}
+const scene::ColourMap& triangular_map() {
+    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)},
+                                    {3, rgb(1, 0, 1)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 1, 0)}};
+    return m;
+}
+// Measured from povray renders: cyan -> yellow -> magenta -> cyan.
+const scene::ColourMap& radial_map() {
+    static const scene::ColourMap m{
+        {0, rgb(0, 1, 1)}, {0.333, rgb(1, 1, 0)}, {0.666, rgb(1, 0, 1)}, {1, rgb(0, 1, 1)}};
+    return m;
+}
 
 }  // namespace
 
-bool is_discrete(scene::PatternType type) {
-    return type == PatternType::Checker || type == PatternType::Brick ||
-           type == PatternType::Hexagon || type == PatternType::Square ||
-           type == PatternType::Triangular;
-}
-
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point) {
-    const glm::dvec3 p = pattern.transform.is_identity() ? world_point
-                                                         : pattern.transform.inv_point(world_point);
-    double v = raw_value(pattern, p);
-    if (is_discrete(pattern.type)) return v;
+    double v = raw_value(pattern.kind, to_pattern_space(pattern.steps, world_point));
+    if (is_discrete(pattern.type())) return v;
     v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
     if (v < 0) v -= std::floor(v);
     return apply_wave(pattern, v);
 }
 
 const scene::ColourMap& default_colour_map(scene::PatternType type) {
-    auto c = [](double v, double r, double g, double b) {
-        return scene::ColourMapEntry{v, Colour{r, g, b, 0, 0}};
-    };
-    static const scene::ColourMap grey_ramp{c(0, 0, 0, 0), c(1, 1, 1, 1)};
-    static const scene::ColourMap checker_map{c(0, 0, 0, 1), c(1, 0, 1, 0)};
-    static const scene::ColourMap brick_map{c(0, 0.5, 0.5, 0.5), c(1, 0.6, 0.15, 0.15)};
-    static const scene::ColourMap hexagon_map{c(0, 0, 0, 1), c(1, 0, 1, 0), c(2, 1, 0, 0)};
-    static const scene::ColourMap square_map{c(0, 0, 0, 1), c(1, 0, 1, 0), c(2, 1, 0, 0),
-                                             c(3, 1, 1, 0)};
-    static const scene::ColourMap triangular_map{c(0, 0, 0, 1), c(1, 0, 1, 0), c(2, 1, 0, 0),
-                                                 c(3, 1, 0, 1), c(4, 0, 1, 1), c(5, 1, 1, 0)};
-    // Measured from povray renders: cyan -> yellow -> magenta -> cyan.
-    static const scene::ColourMap radial_map{c(0, 0, 1, 1), c(0.333, 1, 1, 0), c(0.666, 1, 0, 1),
-                                             c(1, 0, 1, 1)};
     switch (type) {
-        case PatternType::Checker: return checker_map;
-        case PatternType::Brick: return brick_map;
-        case PatternType::Hexagon: return hexagon_map;
-        case PatternType::Square: return square_map;
-        case PatternType::Triangular: return triangular_map;
-        case PatternType::Radial: return radial_map;
-        default: return grey_ramp;
+#define LUMEN_PATTERN_MAP(Kind, keyword, entries, map, ...) \
+    case PatternType::Kind: return map##_map();
+        LUMEN_PATTERN_KINDS(LUMEN_PATTERN_MAP)
+#undef LUMEN_PATTERN_MAP
     }
+    return grey_ramp_map();
 }
 
 scene::Colour lookup_colour_map(const scene::ColourMap& map, double v) {
     const BlendWeights b = blend_weights(map, v);
     if (map.empty()) return {};
-    const Colour& lo = map[b.lower].colour;
+    const Colour& lo = map[b.lower].item;
     if (b.upper_weight == 0) return lo;
-    const Colour& hi = map[b.upper].colour;
+    const Colour& hi = map[b.upper].item;
     const double w = b.upper_weight;
     return {lo.r + w * (hi.r - lo.r), lo.g + w * (hi.g - lo.g), lo.b + w * (hi.b - lo.b),
             lo.f + w * (hi.f - lo.f), lo.t + w * (hi.t - lo.t)};

@@ -13,7 +13,7 @@ namespace {
 
 scene::Pigment pigment_of(scene::PatternType type) {
     scene::Pigment p;
-    p.pattern.type = type;
+    p.pattern.kind = scene::make_pattern_kind(type);
     return p;
 }
 
@@ -64,11 +64,11 @@ TEST(Pattern, CheckerListForm) {
 
 TEST(Pattern, GradientColourMapWithHardEdgeAndTransform) {
     scene::Pigment p = pigment_of(scene::PatternType::Gradient);
-    p.pattern.gradient = glm::normalize(glm::dvec3(1, 0, 1));
+    p.pattern.kind = scene::pattern::Gradient{glm::normalize(glm::dvec3(1, 0, 1))};
     p.colour_map = {{0, rgb(1, 0, 0)}, {0.3, rgb(0, 1, 0)}, {0.3, rgb(0, 0, 1)}, {1, rgb(1, 1, 1)}};
     const glm::dmat4 m = glm::translate(glm::dmat4(1), glm::dvec3(0.2, 0, 0.1)) *
                          glm::scale(glm::dmat4(1), glm::dvec3(1.5));
-    p.pattern.transform = {m, glm::inverse(m)};
+    p.pattern.steps.add_transform({m, glm::inverse(m)});
     EXPECT_LE(max_difference(p, "p_gradient.ppm", 4, 0), 1);
 }
 
@@ -95,7 +95,7 @@ TEST(Pattern, BlendMapLookupRules) {
 
 TEST(Pattern, DiscretePatternsIgnoreFrequency) {
     scene::Pattern p;
-    p.type = scene::PatternType::Checker;
+    p.kind = scene::make_pattern_kind(scene::PatternType::Checker);
     p.frequency = 3;
     EXPECT_EQ(pattern_value(p, {0.5, 0.5, 0.5}), 0.0);
     EXPECT_EQ(pattern_value(p, {1.5, 0.5, 0.5}), 1.0);

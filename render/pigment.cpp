@@ -11,18 +11,18 @@ scene::Colour mix(const scene::Colour& a, const scene::Colour& b, double w) {
 
 scene::Colour evaluate_pigment(const scene::Pigment* pigment, const glm::dvec3& p) {
     if (!pigment) return {};
-    if (pigment->pattern.type == scene::PatternType::Plain) return pigment->colour;
+    if (pigment->pattern.is_plain()) return pigment->colour;
     const double v = pattern_value(pigment->pattern, p);
     if (!pigment->pigment_map.empty()) {
         // pigment_map, or the list form whose entries are indexed 0, 1, 2...
         const BlendWeights b = blend_weights(pigment->pigment_map, v);
-        const scene::Colour lo = evaluate_pigment(pigment->pigment_map[b.lower].pigment.get(), p);
+        const scene::Colour lo = evaluate_pigment(pigment->pigment_map[b.lower].item.get(), p);
         if (b.upper_weight == 0) return lo;
-        const scene::Colour hi = evaluate_pigment(pigment->pigment_map[b.upper].pigment.get(), p);
+        const scene::Colour hi = evaluate_pigment(pigment->pigment_map[b.upper].item.get(), p);
         return mix(lo, hi, b.upper_weight);
     }
     const scene::ColourMap& map = pigment->colour_map.empty()
-                                      ? default_colour_map(pigment->pattern.type)
+                                      ? default_colour_map(pigment->pattern.type())
                                       : pigment->colour_map;
     return lookup_colour_map(map, v);
 }

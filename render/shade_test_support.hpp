@@ -79,7 +79,7 @@ inline scene::ObjectPtr plane(glm::dvec3 n, double d, const Material& m) {
 
 inline scene::PigmentPtr checker(scene::Colour a, scene::Colour b) {
     auto p = std::make_shared<scene::Pigment>();
-    p->pattern.type = scene::PatternType::Checker;
+    p->pattern.kind = scene::make_pattern_kind(scene::PatternType::Checker);
     p->colour_map = {{0, a}, {1, b}};
     p->list_form = true;
     return p;

@@ -227,7 +227,7 @@ TEST(ShadowFilter, WhichTexturesPassAllLight) {
     EXPECT_FALSE(passes_all_light(nullptr));
     // Patterns are not looked into, even where every colour would pass all light.
     auto checker = std::make_shared<scene::Pigment>();
-    checker->pattern.type = scene::PatternType::Checker;
+    checker->pattern.kind = scene::make_pattern_kind(scene::PatternType::Checker);
     checker->colour_map = {{0, {1, 1, 1, 1, 0}}, {1, {1, 1, 1, 1, 0}}};
     const scene::LayeredTexture patterned{texture_of(checker)};
     EXPECT_FALSE(passes_all_light(&patterned));
@@ -290,18 +290,18 @@ TEST(ShadowFilter, WhichTexturesMayPassLight) {
     EXPECT_FALSE(may_pass_light(&layered));
     // A colour_map entry with transmit, a pigment_map entry that filters.
     auto mapped = std::make_shared<scene::Pigment>();
-    mapped->pattern.type = scene::PatternType::Gradient;
+    mapped->pattern.kind = scene::make_pattern_kind(scene::PatternType::Gradient);
     mapped->colour_map = {{0, opaque}, {1, {0, 0, 0, 0, 0.5}}};
     const scene::LayeredTexture gradient{texture_of(mapped)};
     EXPECT_TRUE(may_pass_light(&gradient));
     auto nested = std::make_shared<scene::Pigment>();
-    nested->pattern.type = scene::PatternType::Checker;
+    nested->pattern.kind = scene::make_pattern_kind(scene::PatternType::Checker);
     nested->pigment_map = {{0, std::make_shared<scene::Pigment>()}, {1, mapped}};
     const scene::LayeredTexture checker{texture_of(nested)};
     EXPECT_TRUE(may_pass_light(&checker));
     // texture_map entries are resolved through one of their layers: any may count.
     auto map_texture = std::make_shared<scene::Texture>();
-    map_texture->pattern.type = scene::PatternType::Checker;
+    map_texture->pattern.kind = scene::make_pattern_kind(scene::PatternType::Checker);
     map_texture->texture_map = {{0, solid}, {1, layered}};
     const scene::LayeredTexture by_map{map_texture};
     EXPECT_TRUE(may_pass_light(&by_map));

@@ -25,15 +25,15 @@ ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec
 }  // namespace
 
 ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) {
-    if (texture.pattern.type == scene::PatternType::Plain || texture.texture_map.empty()) {
+    if (texture.pattern.is_plain() || texture.texture_map.empty()) {
         return {evaluate_pigment(texture.pigment.get(), p),
                 texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
     }
     const double v = pattern_value(texture.pattern, p);
     const BlendWeights b = blend_weights(texture.texture_map, v);
-    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].texture, p);
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, p);
     if (b.upper_weight == 0) return lo;
-    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].texture, p);
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, p);
     ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
     out.colour = mix(lo.colour, hi.colour, b.upper_weight);
     return out;
@@ -71,17 +71,17 @@ bool colour_passes(const scene::Colour& c) { return c.f != 0 || c.t != 0; }
 bool pigment_may_pass(const scene::Pigment* p) {
     if (!p) return false;  // the default pigment: black
     if (colour_passes(p->colour)) return true;
-    for (const scene::ColourMapEntry& e : p->colour_map)
-        if (colour_passes(e.colour)) return true;
-    for (const scene::Pigment::MapEntry& e : p->pigment_map)
-        if (pigment_may_pass(e.pigment.get())) return true;
+    for (const auto& e : p->colour_map)
+        if (colour_passes(e.item)) return true;
+    for (const auto& e : p->pigment_map)
+        if (pigment_may_pass(e.item.get())) return true;
     return false;
 }
 
 bool texture_may_pass(const scene::Texture& t) {
     // A texture_map entry is resolved through one of its layers: any of them may count.
-    for (const scene::Texture::MapEntry& e : t.texture_map)
-        for (const scene::TexturePtr& layer : e.texture)
+    for (const auto& e : t.texture_map)
+        for (const scene::TexturePtr& layer : e.item)
             if (layer && texture_may_pass(*layer)) return true;
     return pigment_may_pass(t.pigment.get());
 }
@@ -98,10 +98,10 @@ bool may_pass_light(const scene::LayeredTexture* layers) {
 bool passes_all_light(const scene::LayeredTexture* layers) {
     if (!layers || layers->empty()) return false;
     for (const scene::TexturePtr& t : *layers) {
-        if (!t || (t->pattern.type != scene::PatternType::Plain && !t->texture_map.empty()))
+        if (!t || (!t->pattern.is_plain() && !t->texture_map.empty()))
             return false;
         const scene::Pigment* p = t->pigment.get();
-        if (!p || p->pattern.type != scene::PatternType::Plain) return false;
+        if (!p || !p->pattern.is_plain()) return false;
         const glm::dvec3 filter = layer_filter(p->colour);
         if (filter != glm::dvec3(1)) return false;
     }

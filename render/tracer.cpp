@@ -56,7 +56,7 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
 // Single patterned texture whose entries are shaded separately and blended.
 bool is_texture_map(const scene::LayeredTexture* t) {
     return t && t->size() == 1 && t->front() &&
-           t->front()->pattern.type != scene::PatternType::Plain &&
+           !t->front()->pattern.is_plain() &&
            !t->front()->texture_map.empty();
 }
 
@@ -153,7 +153,7 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
         Context sub = ctx;
         sub.weight *= w;
         Hit h = hit;
-        h.texture = &t.texture_map[i].texture;
+        h.texture = &t.texture_map[i].item;
         return shade(ray, h, sub, state);
     };
     if (b.upper_weight == 0) return entry(b.lower, 1.0);

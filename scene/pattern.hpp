@@ -1,47 +1,33 @@
-// Patterns shared by pigments, normals and textures (pattern.cpp in POV-Ray terms).
+// Patterns shared by pigments, normals and textures: the kind with its own parameters
+// (scene/pattern_kinds.hpp), the parameters common to continuous patterns, and the ordered
+// transforms and warps (scene/pattern_steps.hpp).
 #pragma once
-#include <memory>
 #include <optional>
-#include <vector>
 
-#include <glm/vec3.hpp>
-
+#include "scene/blend_map.hpp"
 #include "scene/colour.hpp"
-#include "scene/transform.hpp"
+#include "scene/pattern_kinds.hpp"
+#include "scene/pattern_steps.hpp"
 #include "scene/unsupported.hpp"
 
 namespace lumen::scene {
 
-enum class PatternType {
-    Plain,  // no pattern: a solid colour / plain texture
-    Checker, Gradient, Planar, Radial, Onion, Spherical, Cylindrical, Brick, Boxed, Hexagon,
-    Square, Triangular,
-    // noise-based and others, evaluated once the noise issue lands:
-    Agate, Bozo, Bumps, Crackle, Dents, Granite, Leopard, Marble, Ripples, Spotted, Waves,
-    Wood, Wrinkles, Quilted, Other
-};
-
 enum class WaveType { Ramp, Sine, Triangle, Scallop, Cubic, Poly };
 
 struct Pattern {
-    PatternType type = PatternType::Plain;
-    glm::dvec3 gradient{1, 0, 0};          // gradient <v> (normalised)
-    glm::dvec3 brick_size{8, 3, 4.5};      // brick
-    double mortar = 0.5;                   // brick
+    PatternKind kind;                      // Plain = no pattern
+    // Continuous patterns only (discrete ones accept and ignore them, as POV does):
     double frequency = 1.0, phase = 0.0;
     WaveType wave = WaveType::Ramp;
     double wave_exponent = 1.0;            // poly_wave exponent
-    glm::dvec3 turbulence{0, 0, 0};        // turbulence amount (0 = none)
-    int octaves = 6;
-    double omega = 0.5, lambda = 2.0;
-    Transform transform;                   // pattern space -> world (inverse maps world points)
+    int noise_generator = 0;               // 0 = global_settings' choice; 1..3 as in POV
+    PatternSteps steps;                    // transforms and warps, pattern space -> world
     std::optional<Unsupported> unsupported;  // set when the pattern or a modifier is unsupported
+
+    PatternType type() const { return PatternType(kind.index()); }
+    bool is_plain() const { return std::holds_alternative<pattern::Plain>(kind); }
 };
 
-struct ColourMapEntry {
-    double value = 0;
-    Colour colour;
-};
-using ColourMap = std::vector<ColourMapEntry>;
+using ColourMap = BlendMap<Colour>;
 
 }  // namespace lumen::scene

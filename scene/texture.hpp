@@ -4,6 +4,9 @@
 #include <optional>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
+#include "scene/blend_map.hpp"
 #include "scene/colour.hpp"
 #include "scene/pattern.hpp"
 
@@ -11,6 +14,7 @@ namespace lumen::scene {
 
 struct Pigment;
 using PigmentPtr = std::shared_ptr<const Pigment>;
+using PigmentMap = BlendMap<PigmentPtr>;
 
 struct Pigment {
     Pattern pattern;                 // Plain = solid `colour`
@@ -18,8 +22,7 @@ struct Pigment {
     ColourMap colour_map;            // empty = the pattern's default map
     // pigment_map entries, or the list form `checker pigment{A} pigment{B}`;
     // for list forms, `value` is the index.
-    struct MapEntry { double value; PigmentPtr pigment; };
-    std::vector<MapEntry> pigment_map;
+    PigmentMap pigment_map;
     bool list_form = false;          // `checker A, B` / `hexagon A, B, C` style
     SourceLoc loc;
 };
@@ -45,17 +48,27 @@ struct Finish {
 };
 using FinishPtr = std::shared_ptr<const Finish>;
 
+struct Normal;
+using NormalPtr = std::shared_ptr<const Normal>;
+using NormalMap = BlendMap<NormalPtr>;
+// slope_map and density_map entries (read as unsupported until slopes and media render).
+using SlopeMap = BlendMap<glm::dvec2>;  // <height, slope>
+using DensityMap = BlendMap<Colour>;
+
 struct Normal {
     Pattern pattern;                 // Plain = no perturbation
     double amount = 0.5;             // bump size
+    double accuracy = 0.02;          // sampling distance of the pattern's slope
+    bool no_bump_scale = false;      // bump_size not scaled with the object
+    NormalMap normal_map;            // normal_map, or the list form `checker normal{A} ...`
     SourceLoc loc;
 };
-using NormalPtr = std::shared_ptr<const Normal>;
 
 struct Texture;
 using TexturePtr = std::shared_ptr<const Texture>;
 // Layers, bottom first: the last layer is the top one (POV layers textures in written order).
 using LayeredTexture = std::vector<TexturePtr>;
+using TextureMap = BlendMap<LayeredTexture>;
 
 struct Texture {
     // Plain texture (pattern.type == Plain): pigment + finish + normal.
@@ -64,8 +77,7 @@ struct Texture {
     NormalPtr normal;     // null = none
     // Patterned texture: texture_map, or list form `checker texture{A} texture{B}`.
     Pattern pattern;
-    struct MapEntry { double value; LayeredTexture texture; };
-    std::vector<MapEntry> texture_map;
+    TextureMap texture_map;
     bool list_form = false;
     SourceLoc loc;
 };

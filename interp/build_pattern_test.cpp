@@ -1,0 +1,168 @@
+// The pattern table as the reader sees it: keywords, list forms, kind modifiers, the ordered
+// transforms and warps, and what is reported unsupported.
+#include "interp/build_test_support.hpp"
+
+namespace lumen::interp::testing {
+namespace {
+
+using BuildPattern = BuildTest;
+namespace pattern = scene::pattern;
+
+// What each keyword needs after it to form a valid pigment.
+std::string pigment_text(std::string_view keyword) {
+    std::string body(keyword);
+    if (keyword == "gradient") body += " y";
+    return "sphere { 0, 1 pigment { " + body + " } }";
+}
+
+TEST_F(BuildPattern, EveryTableKeywordReadsAsItsKind) {
+    int read = 0;
+    for (const scene::PatternInfo& row : scene::kPatternTable) {
+        // Plain has no keyword; function { } and object { } patterns are blocks, not words.
+        if (row.keyword.empty() || row.keyword == "function" || row.keyword == "object") continue;
+        const scene::Texture t = texture_of(pigment_text(row.keyword));
+        EXPECT_EQ(t.pigment->pattern.type(), row.type) << row.keyword;
+        EXPECT_EQ(t.pigment->pattern.unsupported.has_value(), !row.rendered) << row.keyword;
+        if (!row.rendered) {
+            EXPECT_EQ(t.pigment->pattern.unsupported->feature,
+                      "pattern '" + std::string(row.keyword) + "'");
+        }
+        ++read;
+    }
+    EXPECT_EQ(read, int(std::size(scene::kPatternTable)) - 3);
+}
+
+TEST_F(BuildPattern, DiscreteCountsAndListForms) {
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Checker), 2);
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Brick), 2);
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Hexagon), 3);
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Square), 4);
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Triangular), 6);
+    EXPECT_EQ(scene::discrete_entries(scene::PatternType::Gradient), 0);
+    for (const scene::PatternInfo& row : scene::kPatternTable) {
+        if (row.entries == 0) continue;
+        std::string list;
+        for (int i = 0; i < row.entries; ++i) list += (i ? ", rgb " : " rgb ") + std::to_string(i);
+        const scene::Texture t =
+            texture_of("sphere { 0, 1 pigment { " + std::string(row.keyword) + list + " } }");
+        ASSERT_EQ(int(t.pigment->colour_map.size()), row.entries) << row.keyword;
+        EXPECT_TRUE(t.pigment->list_form);
+        for (int i = 0; i < row.entries; ++i) {
+            EXPECT_DOUBLE_EQ(t.pigment->colour_map[i].value, i);
+            EXPECT_DOUBLE_EQ(t.pigment->colour_map[i].item.r, i);
+        }
+    }
+}
+
+TEST_F(BuildPattern, KindParametersGoIntoTheKind) {
+    const scene::Texture b =
+        texture_of("sphere { 0, 1 pigment { brick brick_size <1,2,3> mortar 0.1 } }");
+    const auto& brick = std::get<pattern::Brick>(b.pigment->pattern.kind);
+    expect_vec(brick.size, {1, 2, 3});
+    EXPECT_DOUBLE_EQ(brick.mortar, 0.1);
+    const scene::Texture c = texture_of(
+        "sphere { 0, 1 pigment { crackle metric 1 form <1,0,0> offset 0.2 solid } }");
+    const auto& crackle = std::get<pattern::Crackle>(c.pigment->pattern.kind);
+    EXPECT_DOUBLE_EQ(crackle.metric, 1);
+    expect_vec(crackle.form, {1, 0, 0});
+    EXPECT_DOUBLE_EQ(crackle.offset, 0.2);
+    EXPECT_TRUE(crackle.solid);
+    const scene::Texture m =
+        texture_of("sphere { 0, 1 pigment { mandel 25 exponent 3 interior 1, 0.5 } }");
+    const auto& mandel = std::get<pattern::Mandel>(m.pigment->pattern.kind);
+    EXPECT_EQ(mandel.numbers, std::vector<double>{25});
+    EXPECT_DOUBLE_EQ(mandel.exponent, 3);
+    EXPECT_DOUBLE_EQ(mandel.interior.y, 0.5);
+}
+
+// POV-Ray 3.7 refuses a kind's modifier on another kind; lumen too, rather than drop it.
+TEST_F(BuildPattern, ModifiersOfOtherKindsAreErrors) {
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { gradient x metric 2 } }"),
+              "t.pov:1:36: error: 'metric' can only be used in a facets or crackle pattern");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { checker mortar 0.2 } }"),
+              "t.pov:1:33: error: 'mortar' can only be used in a brick pattern");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { bozo control0 1 } }"),
+              "t.pov:1:30: error: 'control0' can only be used in a quilted pattern");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient x accuracy 0.1 } }"), "no error");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { bozo noise_generator 4 } }"),
+              "t.pov:1:30: error: noise_generator must be 0, 1, 2 or 3");
+    EXPECT_EQ(texture_of("sphere { 0, 1 pigment { bozo noise_generator 3 } }")
+                  .pigment->pattern.noise_generator,
+              3);
+}
+
+// Transforms compose while nothing comes between them; the classic turbulence goes first
+// wherever it is written, and warps stay where they are written.
+TEST_F(BuildPattern, StepsInTheOrderPovAppliesThem) {
+    const scene::Texture t = texture_of(
+        "sphere { 0, 1 pigment { gradient x scale 2 turbulence 0.5 translate x "
+        "warp { repeat x offset y } rotate y*90 octaves 3 } }");
+    const auto& steps = t.pigment->pattern.steps.steps;
+    ASSERT_EQ(steps.size(), 4u);
+    const auto& turb = std::get<scene::warp::ClassicTurbulence>(steps[0]);
+    expect_vec(turb.amount, {0.5, 0.5, 0.5});
+    EXPECT_EQ(turb.octaves, 3);
+    expect_vec(std::get<scene::Transform>(steps[1]).point({1, 1, 1}), {3, 2, 2});
+    const auto& repeat = std::get<scene::warp::Repeat>(steps[2]);
+    expect_vec(repeat.direction, {1, 0, 0});
+    expect_vec(repeat.offset, {0, 1, 0});
+    expect_vec(std::get<scene::Transform>(steps[3]).point({1, 0, 0}), {0, 0, -1});
+    EXPECT_EQ(t.pigment->pattern.unsupported->feature, "turbulence");
+}
+
+// A pigment's transforms written outside the pattern join the same list.
+TEST_F(BuildPattern, ObjectTransformsJoinTheSteps) {
+    const scene::ObjectPtr o = first_object(
+        "sphere { 0, 1 pigment { checker warp { planar } scale 2 } translate x }");
+    const auto& steps = o->texture[0]->pigment->pattern.steps.steps;
+    ASSERT_EQ(steps.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<scene::warp::Mapping>(steps[0]));
+    expect_vec(std::get<scene::Transform>(steps[1]).point({1, 1, 1}), {3, 2, 2});
+}
+
+TEST_F(BuildPattern, EveryWarpTypeIsReadAndReportedUnsupported) {
+    for (const char* warp :
+         {"turbulence 0.2 octaves 2 omega 0.4 lambda 2.5", "repeat x offset y flip x",
+          "black_hole 0, 1 falloff 2 strength 1 repeat x turbulence 0.1 inverse",
+          "cylindrical orientation y dist_exp 1", "spherical", "toroidal major_radius 2",
+          "planar", "cubic"}) {
+        const scene::Scene s =
+            run(std::string("sphere { 0, 1 pigment { checker warp { ") + warp + " } } }");
+        ASSERT_EQ(s.unsupported.size(), 1u) << warp;
+        EXPECT_EQ(s.unsupported[0].feature, "warp");
+        EXPECT_EQ(s.unsupported[0].loc.column, 33u);
+    }
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { } } }").find("expected a warp type"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { turbulence 0.2 repeat x } } }"),
+              "no error");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { planar orientation y } } }"),
+              "no error");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { repeat x+y } } }"), "no error");
+}
+
+// A normal keeps what it is given, though normals do not render yet.
+TEST_F(BuildPattern, NormalModifiersAreKept) {
+    const scene::Texture t = texture_of(
+        "sphere { 0, 1 normal { checker normal { bumps } normal { dents } accuracy 0.1 "
+        "no_bump_scale } }");
+    EXPECT_DOUBLE_EQ(t.normal->accuracy, 0.1);
+    EXPECT_TRUE(t.normal->no_bump_scale);
+    ASSERT_EQ(t.normal->normal_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(t.normal->normal_map[1].value, 1);
+    EXPECT_EQ(t.normal->normal_map[1].item->pattern.type(), scene::PatternType::Dents);
+}
+
+// Blocks lumen does not build (image_map, slope { }, ...) mark the pattern they stand in.
+TEST_F(BuildPattern, UnbuiltBlocksMarkThePattern) {
+    const scene::Scene s = run(
+        "sphere { 0, 1 pigment { image_map { png \"a.png\" } } }\n"
+        "sphere { 0, 1 texture { slope { -z altitude z } texture_map { [0 pigment { rgb 1 }] } } }");
+    ASSERT_EQ(s.unsupported.size(), 2u);
+    EXPECT_EQ(s.unsupported[0].feature, "image_map");
+    EXPECT_EQ(s.unsupported[1].feature, "slope");
+    EXPECT_EQ(s.unsupported[1].loc.line, 2u);
+}
+
+}  // namespace
+}  // namespace lumen::interp::testing

@@ -1,0 +1,262 @@
+// Every pattern kind: its own parameter struct, and one row in LUMEN_PATTERN_KINDS, the single
+// list the interp's keyword recognition, the renderer's dispatch, the discrete entry counts,
+// the default colour maps and the scene dump all derive from.
+//
+// Adding a pattern: its struct here (with `fields`, or deriving NoFields), its row, a reader
+// in interp/build_pattern_kinds.cpp if it takes arguments, and `evaluate(const Kind&, p)` in
+// render/ once it is rendered. A missing struct, `fields` or evaluator is a compile error.
+#pragma once
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace lumen::scene {
+namespace pattern {
+
+// `fields(kind, f)` calls f(name, value) for each parameter, in dump order; f may mutate.
+struct NoFields {
+    template <class Self, class F> static void fields(Self&, F&&) {}
+};
+
+struct Plain : NoFields {};  // no pattern: a solid colour or a plain texture
+struct Checker : NoFields {};
+struct Gradient {
+    glm::dvec3 direction{1, 0, 0};  // normalised
+    template <class Self, class F> static void fields(Self& s, F&& f) { f("gradient", s.direction); }
+};
+struct Planar : NoFields {};
+struct Radial : NoFields {};
+struct Onion : NoFields {};
+struct Spherical : NoFields {};
+struct Cylindrical : NoFields {};
+struct Brick {
+    glm::dvec3 size{8, 3, 4.5};
+    double mortar = 0.5;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("brick_size", s.size);
+        f("mortar", s.mortar);
+    }
+};
+struct Boxed : NoFields {};
+struct Hexagon : NoFields {};
+struct Square : NoFields {};
+struct Triangular : NoFields {};
+
+// Noise-based patterns: read now, rendered once render's noise lands.
+struct Agate {
+    double agate_turb = 1.0;
+    template <class Self, class F> static void fields(Self& s, F&& f) { f("agate_turb", s.agate_turb); }
+};
+struct Bozo : NoFields {};
+struct Bumps : NoFields {};
+struct Crackle {
+    double metric = 2;
+    glm::dvec3 form{-1, 1, 0};
+    double offset = 0;
+    bool solid = false;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("metric", s.metric);
+        f("form", s.form);
+        f("offset", s.offset);
+        f("solid", s.solid);
+    }
+};
+struct Dents : NoFields {};
+struct Granite : NoFields {};
+struct Leopard : NoFields {};
+struct Marble : NoFields {};
+struct Ripples : NoFields {};
+struct Spotted : NoFields {};
+struct Waves : NoFields {};
+struct Wood : NoFields {};
+struct Wrinkles : NoFields {};
+struct Quilted {
+    double control0 = 1, control1 = 1;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("control0", s.control0);
+        f("control1", s.control1);
+    }
+};
+
+// Patterns lumen reads but does not model yet: the numbers, vectors and strings written after
+// the keyword (`mandel 25`, `julia <0.3, 0.5> 30`, `density_file df3 "f"`) are kept as written.
+struct Arguments {
+    std::vector<double> numbers;  // vectors flattened
+    std::string file;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("arguments", s.numbers);
+        f("file", s.file);
+    }
+};
+// Fractal `interior`/`exterior` (type, factor) and `exponent`.
+struct Fractal : Arguments {
+    double exponent = 2;
+    glm::dvec2 interior{0, 1}, exterior{1, 1};
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Arguments::fields(s, f);
+        f("exponent", s.exponent);
+        f("interior", s.interior);
+        f("exterior", s.exterior);
+    }
+};
+struct Aoi : Arguments {};
+struct Average : Arguments {};
+struct Cells : Arguments {};
+struct Cubic : Arguments {};
+struct Julia : Fractal {};
+struct Mandel : Fractal {};
+struct Magnet : Fractal {};
+struct Pavement : Arguments {
+    double form = 0, interior = 0, exterior = 0;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Arguments::fields(s, f);
+        f("form", s.form);
+        f("interior", s.interior);
+        f("exterior", s.exterior);
+    }
+};
+struct Slope : Arguments {};
+struct Spiral1 : Arguments {};
+struct Spiral2 : Arguments {};
+struct Tiling : Arguments {};
+struct Facets : Arguments {
+    double coords = 0, size = 0.1, metric = 2;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Arguments::fields(s, f);
+        f("coords", s.coords);
+        f("size", s.size);
+        f("metric", s.metric);
+    }
+};
+struct Function : Arguments {};  // function { } pattern
+struct Object : NoFields {};    // object { } pattern
+struct DensityFile : Arguments {
+    double interpolate = 0;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Arguments::fields(s, f);
+        f("interpolate", s.interpolate);
+    }
+};
+
+}  // namespace pattern
+
+// X(Kind, keyword, entries, default_map, rendered)
+//   keyword: the SDL word ("" for Plain, which has none)
+//   entries: the entry count of a discrete (block) pattern, whose value is an index that picks
+//            a map entry and whose list form takes that many items; 0 = continuous
+//   default_map: the colour map used when the scene gives none (render/default_colour_maps.cpp)
+//   rendered: false = the interp reports the pattern unsupported, so the renderer never sees it
+#define LUMEN_PATTERN_KINDS(X)                                  \
+    X(Plain, "", 0, grey_ramp, true)                            \
+    X(Checker, "checker", 2, checker, true)                     \
+    X(Gradient, "gradient", 0, grey_ramp, true)                 \
+    X(Planar, "planar", 0, grey_ramp, true)                     \
+    X(Radial, "radial", 0, radial, true)                        \
+    X(Onion, "onion", 0, grey_ramp, true)                       \
+    X(Spherical, "spherical", 0, grey_ramp, true)               \
+    X(Cylindrical, "cylindrical", 0, grey_ramp, true)           \
+    X(Brick, "brick", 2, brick, true)                           \
+    X(Boxed, "boxed", 0, grey_ramp, true)                       \
+    X(Hexagon, "hexagon", 3, hexagon, true)                     \
+    X(Square, "square", 4, square, true)                        \
+    X(Triangular, "triangular", 6, triangular, true)            \
+    X(Agate, "agate", 0, grey_ramp, false)                      \
+    X(Bozo, "bozo", 0, grey_ramp, false)                        \
+    X(Bumps, "bumps", 0, grey_ramp, false)                      \
+    X(Crackle, "crackle", 0, grey_ramp, false)                  \
+    X(Dents, "dents", 0, grey_ramp, false)                      \
+    X(Granite, "granite", 0, grey_ramp, false)                  \
+    X(Leopard, "leopard", 0, grey_ramp, false)                  \
+    X(Marble, "marble", 0, grey_ramp, false)                    \
+    X(Ripples, "ripples", 0, grey_ramp, false)                  \
+    X(Spotted, "spotted", 0, grey_ramp, false)                  \
+    X(Waves, "waves", 0, grey_ramp, false)                      \
+    X(Wood, "wood", 0, grey_ramp, false)                        \
+    X(Wrinkles, "wrinkles", 0, grey_ramp, false)                \
+    X(Quilted, "quilted", 0, grey_ramp, false)                  \
+    X(Aoi, "aoi", 0, grey_ramp, false)                          \
+    X(Average, "average", 0, grey_ramp, false)                  \
+    X(Cells, "cells", 0, grey_ramp, false)                      \
+    X(Cubic, "cubic", 0, grey_ramp, false)                      \
+    X(Julia, "julia", 0, grey_ramp, false)                      \
+    X(Mandel, "mandel", 0, grey_ramp, false)                    \
+    X(Magnet, "magnet", 0, grey_ramp, false)                    \
+    X(Pavement, "pavement", 0, grey_ramp, false)                \
+    X(Slope, "slope", 0, grey_ramp, false)                      \
+    X(Spiral1, "spiral1", 0, grey_ramp, false)                  \
+    X(Spiral2, "spiral2", 0, grey_ramp, false)                  \
+    X(Tiling, "tiling", 0, grey_ramp, false)                    \
+    X(Facets, "facets", 0, grey_ramp, false)                    \
+    X(Function, "function", 0, grey_ramp, false)                \
+    X(Object, "object", 0, grey_ramp, false)                    \
+    X(DensityFile, "density_file", 0, grey_ramp, false)
+
+#define LUMEN_PATTERN_ENUM(Kind, ...) Kind,
+enum class PatternType { LUMEN_PATTERN_KINDS(LUMEN_PATTERN_ENUM) };
+#undef LUMEN_PATTERN_ENUM
+
+namespace pattern_detail {
+// std::variant of the kinds in table order (the row macro leaves a trailing `void`).
+template <class... Done> struct KindList {};
+template <class List, class... Rest> struct VariantOf;
+template <class... Done> struct VariantOf<KindList<Done...>, void> {
+    using type = std::variant<Done...>;
+};
+template <class... Done, class K, class... Rest>
+struct VariantOf<KindList<Done...>, K, Rest...> : VariantOf<KindList<Done..., K>, Rest...> {};
+}  // namespace pattern_detail
+
+#define LUMEN_PATTERN_TYPE(Kind, ...) pattern::Kind,
+using PatternKind =
+    pattern_detail::VariantOf<pattern_detail::KindList<>,
+                              LUMEN_PATTERN_KINDS(LUMEN_PATTERN_TYPE) void>::type;
+#undef LUMEN_PATTERN_TYPE
+
+// The table's row for a kind.
+struct PatternInfo {
+    PatternType type;
+    std::string_view keyword;
+    int entries;
+    bool rendered;
+};
+template <class Kind> struct PatternTraits;
+#define LUMEN_PATTERN_TRAITS(Kind, keyword, entries, map, rendered)                 \
+    template <> struct PatternTraits<pattern::Kind> {                               \
+        static constexpr PatternInfo info{PatternType::Kind, keyword, entries, rendered}; \
+    };
+LUMEN_PATTERN_KINDS(LUMEN_PATTERN_TRAITS)
+#undef LUMEN_PATTERN_TRAITS
+
+#define LUMEN_PATTERN_INFO(Kind, ...) PatternTraits<pattern::Kind>::info,
+inline constexpr PatternInfo kPatternTable[] = {LUMEN_PATTERN_KINDS(LUMEN_PATTERN_INFO)};
+#undef LUMEN_PATTERN_INFO
+
+// The enum, the variant and the table list the kinds in the same order.
+static_assert(std::size(kPatternTable) == std::variant_size_v<PatternKind>);
+template <std::size_t... I> constexpr bool rows_in_order(std::index_sequence<I...>) {
+    return ((PatternTraits<std::variant_alternative_t<I, PatternKind>>::info.type ==
+             PatternType(I)) && ...);
+}
+static_assert(rows_in_order(std::make_index_sequence<std::variant_size_v<PatternKind>>{}));
+
+constexpr const PatternInfo& pattern_info(PatternType type) { return kPatternTable[int(type)]; }
+constexpr int discrete_entries(PatternType type) { return pattern_info(type).entries; }
+
+// A default-valued kind of the given type.
+inline PatternKind make_pattern_kind(PatternType type) {
+    switch (type) {
+#define LUMEN_PATTERN_MAKE(Kind, ...) \
+    case PatternType::Kind: return pattern::Kind{};
+        LUMEN_PATTERN_KINDS(LUMEN_PATTERN_MAKE)
+#undef LUMEN_PATTERN_MAKE
+    }
+    return pattern::Plain{};
+}
+
+}  // namespace lumen::scene
