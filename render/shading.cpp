@@ -102,6 +102,7 @@ bool fog_dims(const LightSource& l, const LightingEnv& env) {
 glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightSample& ls,
                       const LightingEnv& env, const InteriorList& interiors, ThreadState& state) {
     glm::dvec3 filter;
+    const bool fog = fog_dims(l, env);
     double solid = 0;  // the way inside solid objects, where there is no fog
     if (l.shadowless)
         filter = glm::dvec3(passes_projection(l, s.point, ls.dir, ls.distance));
@@ -111,8 +112,8 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
         return glm::dvec3(0);
     else
         filter = shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors,
-                               state.counters, fog_dims(l, env) ? &solid : nullptr);
-    if (fog_dims(l, env) && solid < ls.distance)
+                               state.counters, fog ? &solid : nullptr);
+    if (fog && solid < ls.distance)
         filter *= fog_along(*env.fogs, Ray{s.point, ls.dir}, ls.distance - solid).attenuation;
     return filter;
 }
