@@ -2,6 +2,7 @@
 // pattern over one feature point per unit cube). Both draw from POV's PatternRands through the
 // lattice hash, so the cells and feature points are the same in every scene.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -19,23 +20,6 @@ int cell_of(double v) {
     if (!(std::fabs(f) < 1e18)) return 0;
     return int(std::int64_t(f) & 4095);
 }
-
-// The cube offsets crackle searches: every neighbour within 1, and those 2 away along one
-// axis only (81 in all), x outermost.
-struct CubeOffsets {
-    int d[81][3];
-    constexpr CubeOffsets() : d{} {
-        int n = 0;
-        for (int x = -2; x <= 2; ++x)
-            for (int y = -2; y <= 2; ++y)
-                for (int z = -2; z <= 2; ++z)
-                    if ((x == 2 || x == -2) + (y == 2 || y == -2) + (z == 2 || z == -2) <= 1) {
-                        d[n][0] = x, d[n][1] = y, d[n][2] = z;
-                        ++n;
-                    }
-    }
-};
-constexpr CubeOffsets kCubeOffsets;
 
 glm::dvec3 feature_point(int a, int b, int c) {
     const int q = noise::hash3d(a, b, c);
@@ -58,6 +42,63 @@ double unmeasured(double d, double metric) {
     return std::pow(d, 1 / metric);
 }
 
+// The three smallest distances seen so far and the feature point of the smallest: the first
+// three sorted, each later one inserted with strict comparisons (so a tie keeps the earlier).
+class NearestThree {
+public:
+    void add(double d, const glm::dvec3& f) {
+        if (n_ < 3) {
+            d_[n_] = d, f_[n_] = f;
+            if (++n_ == 3) sort_first();
+            return;
+        }
+        if (d < d_[0]) {
+            d_[2] = d_[1], d_[1] = d_[0], d_[0] = d;
+            f_[0] = f;
+        } else if (d < d_[1]) {
+            d_[2] = d_[1], d_[1] = d;
+        } else if (d < d_[2]) {
+            d_[2] = d;
+        }
+    }
+    double third() const { return d_[2]; }
+    const double* d() const { return d_; }
+    const glm::dvec3& nearest() const { return f_[0]; }
+
+private:
+    void sort_first() {
+        for (int i = 1; i < 3; ++i)
+            for (int j = i; j > 0 && d_[j] < d_[j - 1]; --j) {
+                std::swap(d_[j], d_[j - 1]);
+                std::swap(f_[j], f_[j - 1]);
+            }
+    }
+    double d_[3] = {0, 0, 0};
+    glm::dvec3 f_[3];
+    int n_ = 0;
+};
+
+// The feature points of the home cube and its 26 neighbours, x outermost. Neighbouring
+// samples mostly share a home cube, so each thread keeps the last one's.
+const std::array<glm::dvec3, 27>& inner_feature_points(const int (&h)[3]) {
+    struct Cache {
+        int home[3];
+        bool valid = false;
+        std::array<glm::dvec3, 27> points;
+    };
+    thread_local Cache cache;
+    if (!cache.valid || cache.home[0] != h[0] || cache.home[1] != h[1] || cache.home[2] != h[2]) {
+        int n = 0;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -1; dz <= 1; ++dz)
+                    cache.points[n++] = feature_point(h[0] + dx, h[1] + dy, h[2] + dz);
+        std::copy(h, h + 3, cache.home);
+        cache.valid = true;
+    }
+    return cache.points;
+}
+
 }  // namespace
 
 double evaluate(const pattern::Cells&, const glm::dvec3& p, const scene::Pattern&) {
@@ -66,47 +107,46 @@ double evaluate(const pattern::Cells&, const glm::dvec3& p, const scene::Pattern
     return std::min(noise::pattern_rand(h), 1.0);
 }
 
+// POV searches the home cube's neighbours within 1, and those 2 away along one axis (81
+// cubes). A neighbour 2 away lies at least its gap along that axis from p, so its face of
+// nine cubes is searched only when that could beat the third distance found in the inner 27
+// (which leaves the result as POV's, up to exact ties).
 double evaluate(const pattern::Crackle& k, const glm::dvec3& p, const scene::Pattern& pat) {
     const double fx = std::floor(p.x - kEpsilon), fy = std::floor(p.y - kEpsilon),
                  fz = std::floor(p.z - kEpsilon);
     if (!(std::fabs(fx) < 1e9 && std::fabs(fy) < 1e9 && std::fabs(fz) < 1e9)) return 0;
-    const int hx = int(fx), hy = int(fy), hz = int(fz);
-    // The three nearest feature points: the first three sorted, the rest inserted in order.
-    double d[3];
-    glm::dvec3 nearest;
-    glm::dvec3 first[3];
-    for (int i = 0; i < 3; ++i) {
-        first[i] = feature_point(hx + kCubeOffsets.d[i][0], hy + kCubeOffsets.d[i][1],
-                                 hz + kCubeOffsets.d[i][2]);
-        d[i] = distance(p, first[i], k.metric);
-    }
-    int order[3] = {0, 1, 2};
-    std::sort(order, order + 3, [&](int a, int b) { return d[a] < d[b]; });
-    const double sorted[3] = {d[order[0]], d[order[1]], d[order[2]]};
-    d[0] = sorted[0], d[1] = sorted[1], d[2] = sorted[2];
-    nearest = first[order[0]];
-    for (int i = 3; i < 81; ++i) {
-        const glm::dvec3 f = feature_point(hx + kCubeOffsets.d[i][0], hy + kCubeOffsets.d[i][1],
-                                           hz + kCubeOffsets.d[i][2]);
-        const double di = distance(p, f, k.metric);
-        if (di < d[0]) {
-            d[2] = d[1], d[1] = d[0], d[0] = di;
-            nearest = f;
-        } else if (di < d[1]) {
-            d[2] = d[1], d[1] = di;
-        } else if (di < d[2]) {
-            d[2] = di;
+    const int h[3] = {int(fx), int(fy), int(fz)};
+    const double m = k.metric;
+    NearestThree near;
+    for (const glm::dvec3& f : inner_feature_points(h)) near.add(distance(p, f, m), f);
+    auto visit = [&](int a, int b, int c) {
+        const glm::dvec3 f = feature_point(a, b, c);
+        near.add(distance(p, f, m), f);
+    };
+    const double frac[3] = {p.x - fx, p.y - fy, p.z - fz};
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side : {-2, 2}) {
+            // The gap from p to the face's cubes along this axis, as the metric measures it.
+            const double gap = side < 0 ? frac[axis] + 1 : 2 - frac[axis];
+            const double bound = m == 2 ? gap * gap : m == 1 ? gap : std::pow(gap, m);
+            if (m > 0 && bound > near.third() * (1 + 1e-9)) continue;
+            for (int i = -1; i <= 1; ++i)
+                for (int j = -1; j <= 1; ++j) {
+                    int c[3];
+                    c[axis] = h[axis] + side;
+                    c[(axis + 1) % 3] = h[(axis + 1) % 3] + i;
+                    c[(axis + 2) % 3] = h[(axis + 2) % 3] + j;
+                    visit(c[0], c[1], c[2]);
+                }
         }
-    }
-    if (k.solid) return std::clamp(noise::noise(nearest, generator_of(pat)), 0.0, 1.0);
+    if (k.solid) return std::clamp(noise::noise(near.nearest(), generator_of(pat)), 0.0, 1.0);
+    double d[3] = {near.d()[0], near.d()[1], near.d()[2]};
     if (k.offset != 0) {
-        const double o = k.metric == 2 ? k.offset * k.offset
-                         : k.metric == 1 ? k.offset
-                                         : std::pow(k.offset, k.metric);
+        const double o = m == 2 ? k.offset * k.offset : m == 1 ? k.offset : std::pow(k.offset, m);
         for (double& di : d) di += o;
     }
-    const double v = k.form.x * unmeasured(d[0], k.metric) + k.form.y * unmeasured(d[1], k.metric) +
-                     k.form.z * unmeasured(d[2], k.metric);
+    const double v = k.form.x * unmeasured(d[0], m) + k.form.y * unmeasured(d[1], m) +
+                     k.form.z * unmeasured(d[2], m);
     return std::clamp(v, 0.0, 1.0);
 }
 
