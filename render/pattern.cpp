@@ -3,7 +3,6 @@
 #include "render/pattern.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <glm/common.hpp>
 
