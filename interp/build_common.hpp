@@ -23,7 +23,8 @@ const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
 // Patterns move with everything written after them: a transform appends to the pattern's
-// steps, also in every map entry below it (POV-Ray transforms a whole pigment or texture).
+// steps. A map's entries are evaluated at the point their parent's steps give (as POV-Ray
+// does), so they move with it and are not transformed themselves.
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);

@@ -126,8 +126,7 @@ Transform build_transform_block(ItemCursor& cur) {
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     if (!p) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
-    copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->pigment_map) e.item = transformed(e.item, t);
+    copy->pattern.steps.add_transform(t);  // the map's entries follow (render/pattern.hpp)
     return copy;
 }
 
@@ -135,7 +134,6 @@ scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
     if (!n) return n;
     auto copy = std::make_shared<scene::Normal>(*n);
     copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->normal_map) e.item = transformed(e.item, t);
     return copy;
 }
 
@@ -145,7 +143,6 @@ scene::TexturePtr transformed(const scene::TexturePtr& tex, const Transform& t) 
     copy->pigment = transformed(copy->pigment, t);
     copy->normal = transformed(copy->normal, t);
     copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->texture_map) e.item = transformed(e.item, t);
     return copy;
 }
 

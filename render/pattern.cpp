@@ -136,8 +136,16 @@ const scene::ColourMap& radial_map() {
 
 }  // namespace
 
+glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point) {
+    return to_pattern_space(pattern, world_point);
+}
+
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point) {
-    double v = raw_value(pattern, to_pattern_space(pattern, world_point));
+    return pattern_value_at(pattern, to_pattern_space(pattern, world_point));
+}
+
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point) {
+    double v = raw_value(pattern, pattern_point);
     if (is_discrete(pattern.type())) return v;
     // POV's period is 1.00001, not 1: far from the origin the bands drift.
     if (pattern.frequency != 0) v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);

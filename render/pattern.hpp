@@ -17,6 +17,12 @@ inline bool is_discrete(scene::PatternType type) { return scene::discrete_entrie
 // pattern space, computes the kind's raw value and applies frequency/phase and the wave type
 // (continuous patterns), so the result indexes a blend map directly.
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point);
+// The two halves of pattern_value: the point in the pattern's own space (through its
+// transforms and warps), and the value at such a point. A map's entries (pigment_map,
+// texture_map, normal_map and the list forms) are evaluated at their parent's pattern point,
+// as POV does: the parent's transforms and turbulence carry over to them.
+glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point);
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point);
 
 // The colour map a pattern uses when the scene gives none.
 const scene::ColourMap& default_colour_map(scene::PatternType type);

@@ -29,11 +29,12 @@ ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) 
         return {evaluate_pigment(texture.pigment.get(), p),
                 texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
     }
-    const double v = pattern_value(texture.pattern, p);
-    const BlendWeights b = blend_weights(texture.texture_map, v);
-    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, p);
+    // The entries are evaluated at this pattern's point.
+    const glm::dvec3 tp = pattern_point(texture.pattern, p);
+    const BlendWeights b = blend_weights(texture.texture_map, pattern_value_at(texture.pattern, tp));
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, tp);
     if (b.upper_weight == 0) return lo;
-    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, p);
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, tp);
     ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
     out.colour = mix(lo.colour, hi.colour, b.upper_weight);
     return out;
