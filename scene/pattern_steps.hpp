@@ -29,7 +29,8 @@ struct TurbulenceParams {
 
 namespace warp {
 
-// The pattern's `turbulence` keyword; always the list's first step.
+// The pattern's `turbulence` keyword; always the list's first step. It displaces the point in
+// the pattern's own space, except for marble and wood, which take it into their formula.
 struct ClassicTurbulence : TurbulenceParams {};
 // `warp { turbulence <v> [octaves n] [omega f] [lambda f] }`.
 struct Turbulence : TurbulenceParams {
