@@ -90,6 +90,7 @@ void Tracer::init(const std::vector<LightSource>& lights) {
     env_.ambient_light = scene.globals.ambient_light;
     env_.irid_wavelength = scene.globals.irid_wavelength;
     env_.fogs = &scene.fogs;
+    env_.noise_generator = noise::resolve_generator(0, scene.globals.noise_generator);
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
@@ -309,7 +310,7 @@ void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
                        const InteriorList& interiors) const {
     // No fog while the ray is inside a solid (non-hollow) object.
     if (scene_.fogs.empty() || interiors.in_solid()) return;
-    const FogEffect e = fog_along(scene_.fogs, ray, depth);
+    const FogEffect e = fog_along(scene_.fogs, ray, depth, env_.noise_generator);
     c.rgb = e.added + e.attenuation * c.rgb;
     c.transmit *= e.transmit;
 }
