@@ -6,6 +6,7 @@
 
 #include "interp/value.hpp"
 #include "base/diagnostics.hpp"
+#include "base/file_resolver.hpp"
 
 namespace lumen::interp {
 
@@ -17,6 +18,7 @@ struct BuildContext {
     scene::FinishPtr default_finish;    // null = POV default finish
     scene::NormalPtr default_normal;    // null = none
     std::function<void(const Diagnostic&)> warn;  // may be empty
+    SearchPath search_path;  // where the files a scene names are looked for (density files)
 };
 
 // True for block keywords that the builders turn into values. Reserved words that are not

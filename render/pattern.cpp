@@ -6,6 +6,12 @@
 #include <numbers>
 
 #include "render/pattern_kinds.hpp"
+#include "render/patterns/fractals.hpp"
+#include "render/patterns/pattern_sources.hpp"
+#include "render/patterns/periodic.hpp"
+#include "render/patterns/surface_patterns.hpp"
+#include "render/patterns/tilings.hpp"
+#include "render/patterns/warps.hpp"
 
 namespace lumen::render {
 namespace {
@@ -17,23 +23,28 @@ template <class... F> struct Overloaded : F... { using F::operator()...; };
 template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 // The steps act on the pattern first to last, so a world point goes through them last to
-// first. Warps (and turbulence with an amount) are the noise issue's: the interp reports a
-// pattern that has them unsupported, so they never reach a render and leave the point as is.
+// first. Turbulence (with an amount) is the noise issue's: the interp reports a pattern that
+// has it unsupported, so it never reaches a render and leaves the point as is.
 glm::dvec3 to_pattern_space(const scene::PatternSteps& steps, glm::dvec3 p) {
     for (auto it = steps.steps.rbegin(); it != steps.steps.rend(); ++it)
         std::visit(Overloaded{[&](const scene::Transform& t) {
                                   if (!t.is_identity()) p = t.inv_point(p);
                               },
+                              [&](const scene::warp::Repeat& w) { p = warp_point(w, p); },
+                              [&](const scene::warp::BlackHole& w) { p = warp_point(w, p); },
+                              [&](const scene::warp::Mapping& w) { p = warp_point(w, p); },
                               [](const auto&) {}},
                    *it);
     return p;
 }
 
-double raw_value(const scene::PatternKind& kind, const glm::dvec3& p) {
+double raw_value(const scene::PatternKind& kind, const glm::dvec3& p, const SurfacePoint* surface) {
     return std::visit(
         [&](const auto& k) -> double {
             using Kind = std::decay_t<decltype(k)>;
-            if constexpr (scene::PatternTraits<Kind>::info.rendered)
+            if constexpr (requires { evaluate(k, p, surface); })
+                return evaluate(k, p, surface);  // slope, aoi
+            else if constexpr (scene::PatternTraits<Kind>::info.rendered)
                 return evaluate(k, p);
             else
                 return 0.0;  // reported unsupported by the interp: never rendered
@@ -92,11 +103,23 @@ const scene::ColourMap& radial_map() {
 
 }  // namespace
 
-double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point) {
-    double v = raw_value(pattern.kind, to_pattern_space(pattern.steps, world_point));
+double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point,
+                     const SurfacePoint* surface) {
+    return pattern_value_at(pattern, to_pattern_space(pattern.steps, world_point), surface);
+}
+
+glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point) {
+    return to_pattern_space(pattern.steps, world_point);
+}
+
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point,
+                        const SurfacePoint* surface) {
+    double v = raw_value(pattern.kind, pattern_point, surface);
     if (is_discrete(pattern.type())) return v;
-    v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
-    if (v < 0) v -= std::floor(v);
+    if (pattern.frequency != 0) {  // 0: POV-Ray's "no frequency" patterns (quilted)
+        v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
+        if (v < 0) v -= std::floor(v);
+    }
     return apply_wave(pattern, v);
 }
 
