@@ -146,9 +146,6 @@ void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern
     scene::PatternStep step = read_warp_step(sub);
     if (std::holds_alternative<scene::warp::Turbulence>(step))
         mark_unsupported(pattern, "warp", block.loc);  // evaluated once the noise issue lands
-    if (const auto* b = std::get_if<scene::warp::BlackHole>(&step);
-        b && b->turbulence != glm::dvec3(0) && b->repeat != glm::dvec3(0))
-        mark_unsupported(pattern, "black_hole turbulence", b->loc);  // needs the noise tables
     pattern.steps.steps.push_back(std::move(step));
 }
 

@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "noise/noise.hpp"
+
 namespace lumen::render {
 namespace {
 
@@ -108,14 +110,26 @@ glm::dvec3 warp_point(const scene::warp::Repeat& w, const glm::dvec3& point) {
     return p + block * w.offset;
 }
 
-// Points within `radius` of the centre (of the nearest repeated centre) are pushed away
+// Points within `radius` of the centre (of their cell's centre, repeated) are pushed away
 // from it by up to their distance, strongest near the centre: ((R - L) / R)^falloff ·
-// strength, capped at 1; `inverse` pulls them in instead.
+// strength, capped at 1; `inverse` pulls them in instead. A repeated hole's turbulence moves
+// each cell's centre by a random fraction of it, drawn from the cell's hash.
 glm::dvec3 warp_point(const scene::warp::BlackHole& w, const glm::dvec3& p) {
     if (w.type != 0) return p;
     glm::dvec3 centre = w.centre;
-    for (int a = 0; a < 3; ++a)
-        if (w.repeat[a] >= kEpsilon) centre[a] += std::floor(p[a] / w.repeat[a]) * w.repeat[a];
+    int cell[3] = {0, 0, 0};
+    bool repeated = false;
+    for (int a = 0; a < 3; ++a) {
+        if (w.repeat[a] < kEpsilon) continue;
+        const double k = std::floor(p[a] / w.repeat[a]);
+        centre[a] += k * w.repeat[a];
+        cell[a] = int(k);
+        repeated = true;
+    }
+    if (repeated && w.turbulence != glm::dvec3(0)) {
+        const int h = noise::hash3d(cell[0], cell[1], cell[2]);
+        for (int a = 0; a < 3; ++a) centre[a] += noise::pattern_rand(h + a) * w.turbulence[a];
+    }
     const glm::dvec3 d = p - centre;
     const double len = glm::length(d);
     if (len >= w.radius) return p;
