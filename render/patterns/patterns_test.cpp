@@ -124,5 +124,23 @@ TEST(Patterns, DensityFileNearestAndTrilinear) {
     EXPECT_DOUBLE_EQ(evaluate(d, {0.25, 0.5, 0.5}), 0.4);
 }
 
+// Catmull-Rom halfway between voxels 0 and 1 weighs voxels −1, 0, 1, 2 by −1/16, 9/16, 9/16,
+// −1/16; voxel −1 is (2⁶⁴ − 1) mod n: voxel 0 for n = 5, voxel 3 for n = 4.
+TEST(Patterns, DensityFileTricubic) {
+    auto grid = std::make_shared<pattern::DensityGrid>();
+    grid->nx = 5, grid->ny = 1, grid->nz = 1;
+    grid->values = {0.1, 0.5, 0.9, 0.3, 0.7};
+    pattern::DensityFile d;
+    d.grid = grid;
+    d.interpolate = 2;
+    const double w = 1 / 16.0, c = 9 / 16.0;
+    EXPECT_NEAR(evaluate(d, {0.1, 0.5, 0.5}), -w * 0.1 + c * 0.1 + c * 0.5 - w * 0.9, 1e-12);
+    grid->nx = 4;
+    grid->values = {0.1, 0.5, 0.9, 0.3};
+    EXPECT_NEAR(evaluate(d, {0.125, 0.5, 0.5}), -w * 0.3 + c * 0.1 + c * 0.5 - w * 0.9, 1e-12);
+    grid->values = {0, 0, 1, 0};  // beside a sharp edge the cubic dips below 0: held at 0
+    EXPECT_DOUBLE_EQ(evaluate(d, {0.125, 0.5, 0.5}), 0);
+}
+
 }  // namespace
 }  // namespace lumen::render::test
