@@ -170,7 +170,7 @@ struct Slope {
 };
 struct Spiral1 : Arguments {};
 struct Spiral2 : Arguments {};
-// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1, 2, 3 and 10).
+// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1, 2, 3, 5 and 10).
 struct Tiling {
     int type = 1;
     template <class Self, class F> static void fields(Self& s, F&& f) { f("tiling", s.type); }
