@@ -20,13 +20,14 @@ const std::vector<std::string> kData = {
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
     "looks_like", "projected_through", "global_settings", "background", "interior_texture",
     "default",   // `default { }`: the old spelling of #default
-    "warp"};     // read by the pattern it modifies (build_warp.cpp)
+    "warp",      // read by the pattern it modifies (build_warp.cpp)
+    "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
+    "slope"};            // `slope { ... }` (build_pattern_kinds.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
-    "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
-    "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
+    "subsurface", "image_map", "bump_map", "material_map", "image_pattern", "slope_map", "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -38,8 +39,10 @@ template <class T> Value make(const T& v, SourceLoc loc) {
 }
 
 // Every Unsupported reachable from a texture / pigment / normal.
+void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out);
 void collect(const scene::Pattern& p, std::vector<scene::Unsupported>& out) {
     if (p.unsupported) out.push_back(*p.unsupported);
+    if (const auto* k = std::get_if<scene::pattern::PigmentPattern>(&p.kind)) collect(k->pigment, out);
 }
 void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     if (!p) return;

@@ -23,7 +23,8 @@ const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
 // Patterns move with everything written after them: a transform appends to the pattern's
-// steps, also in every map entry below it (POV-Ray transforms a whole pigment or texture).
+// steps, also in every map entry below it (POV-Ray transforms a whole pigment or texture),
+// except a pigment's pigment_map entries, which see the pigment's own pattern point.
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
@@ -54,6 +55,8 @@ const std::vector<std::string>& pattern_kind_keywords();
 inline double single_precision(double v) {
     return std::fabs(v) <= 3.4028234663852886e38 ? double(float(v)) : v;
 }
+// The body of `slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }`.
+void read_slope_block(ItemCursor& cur, scene::pattern::Slope& slope);
 // `warp { ... }`: appends the warp to the pattern's steps (build_warp.cpp).
 void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern);
 

@@ -123,11 +123,12 @@ Transform build_transform_block(ItemCursor& cur) {
     return invert ? inverted(total) : total;
 }
 
+// Not the pigment_map entries: they are evaluated at the pigment's pattern point, so they
+// already move with it (render/pigment.cpp).
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     if (!p) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
     copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->pigment_map) e.item = transformed(e.item, t);
     return copy;
 }
 

@@ -41,9 +41,10 @@ double evaluate(const pattern::Planar&, const glm::dvec3& p) {
     return 1.0 - std::min(1.0, std::fabs(p.y));
 }
 
-// 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y).
+// 1 at +x, 1.25 at -z, 1.5 at -x (then 0.5 at -x, 0.75 at +z) winding around +y, as POV-Ray
+// computes it: the value lies in (0, 1.5], which frequency and its 1.00001 period see.
 double evaluate(const pattern::Radial&, const glm::dvec3& p) {
-    return std::atan2(-p.z, p.x) / (2 * std::numbers::pi);
+    return 1 - std::atan2(p.z, p.x) / (2 * std::numbers::pi);
 }
 
 double evaluate(const pattern::Onion&, const glm::dvec3& p) {

@@ -16,38 +16,61 @@ const scene::Texture* top_layer(const scene::LayeredTexture& layers) {
     return layers.empty() ? nullptr : layers.back().get();
 }
 
-ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p) {
+ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p,
+                            const SurfacePoint* surface) {
     const scene::Texture* t = top_layer(layers);
     if (!t) return {scene::Colour{}, &default_finish(), nullptr};
-    return resolve_layer(*t, p);
+    return resolve_layer(*t, p, surface);
+}
+
+// `average texture_map`: the entries' colours weighted by their values, with the finish and
+// normal of the heaviest entry (as a blend takes the nearer entry's).
+ResolvedLayer resolve_average(const scene::TextureMap& map, const glm::dvec3& p,
+                              const SurfacePoint* surface) {
+    const double total = scene::average_total(map);
+    if (total == 0) return {scene::Colour{}, &default_finish(), nullptr};
+    ResolvedLayer out{scene::Colour{}, &default_finish(), nullptr};
+    double heaviest = -1;
+    for (const auto& e : map) {
+        const ResolvedLayer l = resolve_entry(e.item, p, surface);
+        const double w = e.value / total;
+        const scene::Colour& c = l.colour;
+        out.colour = {out.colour.r + w * c.r, out.colour.g + w * c.g, out.colour.b + w * c.b,
+                      out.colour.f + w * c.f, out.colour.t + w * c.t};
+        if (w > heaviest) heaviest = w, out.finish = l.finish, out.normal = l.normal;
+    }
+    return out;
 }
 
 }  // namespace
 
-ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) {
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p,
+                            const SurfacePoint* surface) {
     if (texture.pattern.is_plain() || texture.texture_map.empty()) {
-        return {evaluate_pigment(texture.pigment.get(), p),
+        return {evaluate_pigment(texture.pigment.get(), p, surface),
                 texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
     }
-    const double v = pattern_value(texture.pattern, p);
+    if (std::holds_alternative<scene::pattern::Average>(texture.pattern.kind))
+        return resolve_average(texture.texture_map, p, surface);
+    const double v = pattern_value(texture.pattern, p, surface);
     const BlendWeights b = blend_weights(texture.texture_map, v);
-    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, p);
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, p, surface);
     if (b.upper_weight == 0) return lo;
-    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, p);
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, p, surface);
     ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
     out.colour = mix(lo.colour, hi.colour, b.upper_weight);
     return out;
 }
 
 void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
-                    ResolvedLayers& out) {
+                    ResolvedLayers& out, const SurfacePoint* surface) {
     out.clear();
     if (!layers || layers->empty()) {
         out.add({scene::Colour{}, &default_finish(), nullptr});
         return;
     }
     for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it)
-        out.add(*it ? resolve_layer(**it, p)
+        out.add(*it ? resolve_layer(**it, p, surface)
                     : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr});
 }
 

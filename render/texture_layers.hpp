@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "render/hit.hpp"
+#include "render/pattern.hpp"
 #include "scene/texture.hpp"
 
 namespace lumen::render {
@@ -33,7 +34,9 @@ inline const scene::LayeredTexture* facing_texture(const Hit& hit, const glm::dv
 // Plain texture -> its layer. A patterned texture used as one layer of several is resolved by
 // blending its entries' pigments and taking the finish/normal of the heavier entry (POV blends
 // whole shading results only for a single patterned texture; the tracer does that itself).
-ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p);
+// `surface` (null: none) reaches the slope and aoi patterns.
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p,
+                            const SurfacePoint* surface = nullptr);
 
 // Top-first list of the resolved layers of `layers` (bottom-first in the scene graph); a null
 // or empty texture is the default one (black, default finish).
@@ -54,7 +57,8 @@ private:
     int count_ = 0;
     alignas(ResolvedLayer) unsigned char storage_[kMax * sizeof(ResolvedLayer)];
 };
-void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out);
+void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out,
+                    const SurfacePoint* surface = nullptr);
 
 // Product over layers of (rgb·filter + transmit): the light a surface lets through.
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p);

@@ -54,6 +54,13 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
 }
 
 // Single patterned texture whose entries are shaded separately and blended.
+// The hit as the surface patterns (slope, aoi) see it: the normal turned to face the ray.
+SurfacePoint surface_point(const Ray& ray, const Hit& hit) {
+    glm::dvec3 n = hit.normal;
+    if (glm::dot(n, ray.dir) > 0) n = -n;
+    return {hit.point, n, ray.dir};
+}
+
 bool is_texture_map(const scene::LayeredTexture* t) {
     return t && t->size() == 1 && t->front() &&
            !t->front()->pattern.is_plain() &&
@@ -149,7 +156,6 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
     if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, ctx, state);
     // texture_map: shade both neighbouring entries and blend the results.
     const scene::Texture& t = *texture->front();
-    const BlendWeights b = blend_weights(t.texture_map, pattern_value(t.pattern, hit.point));
     auto entry = [&](int i, double w) {
         Context sub = ctx;
         sub.weight *= w;
@@ -157,6 +163,23 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
         h.texture = &t.texture_map[i].item;
         return shade(ray, h, sub, state);
     };
+    if (std::holds_alternative<scene::pattern::Average>(t.pattern.kind)) {
+        // average: every entry shaded and weighted by its value (a total of 0 gives black).
+        RayColour out;
+        const double total = scene::average_total(t.texture_map);
+        if (total == 0) return out;
+        for (int i = 0; i < int(t.texture_map.size()); ++i) {
+            const double w = t.texture_map[i].value / total;
+            if (std::fabs(w) * ctx.weight < adc_bailout_) continue;
+            const RayColour c = entry(i, std::fabs(w));
+            out.rgb += w * c.rgb;
+            out.transmit += w * c.transmit;
+        }
+        return out;
+    }
+    const SurfacePoint surface = surface_point(ray, hit);
+    const BlendWeights b =
+        blend_weights(t.texture_map, pattern_value(t.pattern, hit.point, &surface));
     if (b.upper_weight == 0) return entry(b.lower, 1.0);
     RayColour out;
     const double ws[2] = {1 - b.upper_weight, b.upper_weight};
@@ -177,7 +200,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     if (glm::dot(raw_n, d) > 0) raw_n = -raw_n;  // every surface is two-sided
 
     ResolvedLayers layers;
-    resolve_layers(texture, hit.point, layers);
+    const SurfacePoint surface = surface_point(ray, hit);
+    resolve_layers(texture, hit.point, layers, &surface);
 
     const int quality = options_.quality;
     const bool double_illuminate = hit.double_illuminate;
