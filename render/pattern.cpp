@@ -75,12 +75,12 @@ const scene::ColourMap& hexagon_map() {
 }
 const scene::ColourMap& square_map() {
     static const scene::ColourMap m{
-        {0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)}, {3, rgb(1, 1, 0)}};
+        {0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)}, {3, rgb(1, 1, 0)}};
     return m;
 }
 const scene::ColourMap& triangular_map() {
-    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)},
-                                    {3, rgb(1, 0, 1)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 1, 0)}};
+    static const scene::ColourMap m{{0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)},
+                                    {3, rgb(1, 1, 0)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 0, 1)}};
     return m;
 }
 // Measured from povray renders: cyan -> yellow -> magenta -> cyan.
@@ -93,7 +93,15 @@ const scene::ColourMap& radial_map() {
 }  // namespace
 
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point) {
-    double v = raw_value(pattern.kind, to_pattern_space(pattern.steps, world_point));
+    return pattern_value_at(pattern, to_pattern_space(pattern, world_point));
+}
+
+glm::dvec3 to_pattern_space(const scene::Pattern& pattern, const glm::dvec3& world_point) {
+    return to_pattern_space(pattern.steps, world_point);
+}
+
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point) {
+    double v = raw_value(pattern.kind, pattern_point);
     if (is_discrete(pattern.type())) return v;
     v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
     if (v < 0) v -= std::floor(v);
