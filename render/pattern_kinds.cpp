@@ -41,13 +41,17 @@ double evaluate(const pattern::Planar&, const glm::dvec3& p) {
     return 1.0 - std::min(1.0, std::fabs(p.y));
 }
 
-// 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y).
+// 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y), as POV computes it: in
+// [0.25, 1.25), so the frequency's wrap at 1.00001 falls where POV's does, and 0.25 within
+// 0.001 of the axis.
 double evaluate(const pattern::Radial&, const glm::dvec3& p) {
-    return std::atan2(-p.z, p.x) / (2 * std::numbers::pi);
+    if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+    return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / (2 * std::numbers::pi);
 }
 
+// Wrapped here, before the frequency's wrap at 1.00001 (beyond a radius of 1 the two differ).
 double evaluate(const pattern::Onion&, const glm::dvec3& p) {
-    return std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    return std::fmod(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), 1.0);
 }
 
 double evaluate(const pattern::Spherical&, const glm::dvec3& p) {
