@@ -20,13 +20,14 @@ const std::vector<std::string> kData = {
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
     "looks_like", "projected_through", "global_settings", "background", "interior_texture",
     "default",   // `default { }`: the old spelling of #default
-    "warp"};     // read by the pattern it modifies (build_warp.cpp)
+    "warp",      // read by the pattern it modifies (build_warp.cpp)
+    "slope_map"};  // read by its normal (build_normal.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
     "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
-    "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
+    "pigment_pattern", "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -46,13 +47,18 @@ void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     collect(p->pattern, out);
     for (const auto& e : p->pigment_map) collect(e.item, out);
 }
+void collect(const scene::NormalPtr& n, std::vector<scene::Unsupported>& out) {
+    if (!n) return;
+    collect(n->pattern, out);
+    for (const auto& e : n->normal_map) collect(e.item, out);
+}
 void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported>& out) {
     for (const auto& t : layers) {
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
         if (t->finish && t->finish->unsupported) out.push_back(*t->finish->unsupported);
-        if (t->normal) collect(t->normal->pattern, out);
+        collect(t->normal, out);
         for (const auto& e : t->texture_map) collect(e.item, out);
     }
 }

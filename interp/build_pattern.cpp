@@ -3,6 +3,7 @@
 // kind-specific arguments and modifiers are in build_pattern_kinds.cpp, warps in
 // build_warp.cpp.
 #include "interp/build_common.hpp"
+#include "scene/normal_forms.hpp"
 
 namespace lumen::interp {
 
@@ -16,14 +17,15 @@ const scene::PatternInfo* find_pattern(std::string_view w) {
     return nullptr;
 }
 
-// Sets the pattern's kind and marks it unsupported where lumen does not render it.
+// Sets the pattern's kind and marks it unsupported where lumen does not render it (as a
+// normal: scene/normal_forms.hpp).
 void set_kind(scene::Pattern& pattern, PatternType type, const std::string& word,
               const std::string& owner, SourceLoc loc) {
     pattern.kind = scene::make_pattern_kind(type);
-    if (!owner.empty())
-        mark_unsupported(pattern, owner + " '" + word + "'", loc);
-    else if (!scene::pattern_info(type).rendered)
-        mark_unsupported(pattern, "pattern '" + word + "'", loc);
+    const bool rendered =
+        owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
+    if (!rendered)
+        mark_unsupported(pattern, (owner.empty() ? "pattern" : owner) + " '" + word + "'", loc);
 }
 
 // turbulence, octaves, omega, lambda: the classic turbulence (scene/pattern_steps.hpp).

@@ -18,6 +18,12 @@ inline bool is_discrete(scene::PatternType type) { return scene::discrete_entrie
 // (continuous patterns), so the result indexes a blend map directly.
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point);
 
+// The two halves of pattern_value: a world point mapped into the pattern's space, and the
+// value at a point already there (a normal samples its pattern's slope around one warped
+// point, and POV does not warp the samples again).
+glm::dvec3 to_pattern_space(const scene::Pattern& pattern, const glm::dvec3& world_point);
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point);
+
 // The colour map a pattern uses when the scene gives none.
 const scene::ColourMap& default_colour_map(scene::PatternType type);
 

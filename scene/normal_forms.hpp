@@ -1,0 +1,66 @@
+// How each pattern kind perturbs a normal. POV-Ray gives a few kinds a perturbation of their
+// own (bumps, dents, wrinkles, ripples, waves, quilted, facets and average); a normal with any
+// other kind leans against the slope of the kind's value, sampled around the point
+// (render/normal.cpp). A normal renders when its form does: a dedicated form once lumen
+// implements it, a differenced kind exactly when the pattern table renders the kind (so a
+// kind that lights up for pigments lights up for normals too).
+#pragma once
+#include <cstddef>
+#include <utility>
+#include <variant>
+
+#include "scene/pattern_kinds.hpp"
+
+namespace lumen::scene {
+
+// Differenced unless specialised below.
+template <class Kind> struct NormalForm {
+    static constexpr bool dedicated = false;
+    static constexpr bool rendered = PatternTraits<Kind>::info.rendered;
+};
+
+// Dedicated forms built on POV's noise (its vector noise and wave sources): they render with
+// the noise patterns.
+#define LUMEN_NOISE_NORMAL_FORM(Kind)                                             \
+    template <> struct NormalForm<pattern::Kind> {                                \
+        static constexpr bool dedicated = true;                                   \
+        static constexpr bool rendered = PatternTraits<pattern::Kind>::info.rendered; \
+    };
+LUMEN_NOISE_NORMAL_FORM(Bumps)
+LUMEN_NOISE_NORMAL_FORM(Dents)
+LUMEN_NOISE_NORMAL_FORM(Wrinkles)
+LUMEN_NOISE_NORMAL_FORM(Ripples)
+LUMEN_NOISE_NORMAL_FORM(Waves)
+#undef LUMEN_NOISE_NORMAL_FORM
+
+template <> struct NormalForm<pattern::Quilted> {
+    static constexpr bool dedicated = true;
+    static constexpr bool rendered = true;
+};
+template <> struct NormalForm<pattern::Average> {  // the normal_map's normals, weighted
+    static constexpr bool dedicated = true;
+    static constexpr bool rendered = true;
+};
+template <> struct NormalForm<pattern::Facets> {
+    static constexpr bool dedicated = true;
+    static constexpr bool rendered = false;
+};
+
+namespace normal_form_detail {
+template <std::size_t... I>
+constexpr bool rendered_at(PatternType type, std::index_sequence<I...>) {
+    bool out = false;
+    ((int(type) == int(I) ? (out = NormalForm<std::variant_alternative_t<I, PatternKind>>::rendered)
+                          : false),
+     ...);
+    return out;
+}
+}  // namespace normal_form_detail
+
+// Whether lumen renders a normal { } of this pattern type.
+constexpr bool normal_rendered(PatternType type) {
+    return normal_form_detail::rendered_at(
+        type, std::make_index_sequence<std::variant_size_v<PatternKind>>{});
+}
+
+}  // namespace lumen::scene
