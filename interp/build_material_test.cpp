@@ -135,10 +135,10 @@ TEST_F(BuildMaterial, ObsoleteFinishIorIsKept) {
 }
 
 TEST_F(BuildMaterial, NormalPatternRecordedAsUnsupported) {
-    scene::Texture t = texture_of("sphere { 0, 1 normal { bumps 0.4 scale 0.2 } }");
-    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Bumps);
+    scene::Texture t = texture_of("sphere { 0, 1 normal { facets bump_size 0.4 scale 0.2 } }");
+    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Facets);
     EXPECT_EQ(t.normal->amount, double(0.4f));  // POV keeps it in single precision
-    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'bumps'");
+    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'facets'");
 }
 
 TEST_F(BuildMaterial, TextureIdentCopiesAndAcceptsModifiers) {

@@ -33,12 +33,14 @@ TEST_F(BuildNormal, EveryKindIsReportedUnlessItRendersAsANormal) {
         }
         rendered += expected;
     }
-    // The differenced kinds that render for pigments, and quilted and average.
+    // The differenced kinds that render for pigments, bumps, wrinkles, quilted and average.
+    EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Bumps));
+    EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Wrinkles));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Quilted));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Average));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Gradient));
     EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Facets));
-    EXPECT_GE(rendered, 14);
+    EXPECT_GE(rendered, 16);
 }
 
 TEST_F(BuildNormal, AmountAndAccuracyAreSinglePrecision) {

@@ -11,6 +11,9 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "noise/noise.hpp"
+#include "render/patterns/normal_forms.hpp"
+
 namespace lumen::render {
 namespace {
 
@@ -189,6 +192,30 @@ TEST(Normal, AverageWeighsTheEntries) {
     avg.normal_map = {{3, shared(left)}, {1, shared(right)}};
     const glm::dvec3 l = perturbed_normal(left, kFacing, p), r = perturbed_normal(right, kFacing, p);
     expect_near(perturbed_normal(avg, kFacing, p), glm::normalize(0.75 * l + 0.25 * r));
+}
+
+// bumps adds the amount times POV's vector noise (at the pattern-space point); wrinkles adds
+// ten octaves of its absolute value, so it leans towards +x+y+z.
+TEST(Normal, NoiseForms) {
+    const glm::dvec3 p{1.3, -2.7, 0.37};
+    glm::dvec3 n(0, 0, -1);
+    add_form(scene::pattern::Bumps{}, normal_of(scene::pattern::Bumps{}, 2), p, n);
+    expect_near(n, glm::dvec3(0, 0, -1) + 2.0 * noise::dnoise(p));
+    // POV's DNoise at this point (the noise module's reference value).
+    expect_near(noise::dnoise(p), {0.462106769680104, -0.073638712776967, -0.210533608108356}, 1e-12);
+
+    glm::dvec3 w(0);
+    add_form(scene::pattern::Wrinkles{}, normal_of(scene::pattern::Wrinkles{}, 1), p, w);
+    EXPECT_GT(w.x, 0);
+    EXPECT_GT(w.y, 0);
+    EXPECT_GT(w.z, 0);
+    EXPECT_GE(w.x, std::fabs(noise::dnoise(p).x));  // the first octave, and more
+
+    scene::Normal on_the_move = normal_of(scene::pattern::Bumps{}, 1);
+    on_the_move.pattern.steps.add_transform(scaled(glm::dvec3(0.1)));
+    const glm::dvec3 q{0.13, -0.27, 0.037};  // pattern point p
+    expect_near(perturbed_normal(on_the_move, {0, 0, -1}, q),
+                glm::normalize(glm::dvec3(0, 0, -1) + noise::dnoise(p)), 1e-12);
 }
 
 TEST(Normal, QuiltLeansAwayFromTheCubeCentre) {
