@@ -115,7 +115,7 @@ void perturb(const scene::Normal& normal, glm::dvec3& n, const glm::dvec3& p) {
                 average_entries(normal, tp, n);
             } else if constexpr (Form::dedicated) {
                 // Not rendered: reported unsupported by the interp, never reaches a render.
-                if constexpr (Form::rendered) add_form(kind, normal, tp, n);
+                if constexpr (Form::rendered) apply_form(kind, normal, tp, n);
             } else if (!normal.normal_map.empty()) {
                 blend_entries(normal, tp, n);
             } else {

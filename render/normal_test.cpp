@@ -199,13 +199,13 @@ TEST(Normal, AverageWeighsTheEntries) {
 TEST(Normal, NoiseForms) {
     const glm::dvec3 p{1.3, -2.7, 0.37};
     glm::dvec3 n(0, 0, -1);
-    add_form(scene::pattern::Bumps{}, normal_of(scene::pattern::Bumps{}, 2), p, n);
+    apply_form(scene::pattern::Bumps{}, normal_of(scene::pattern::Bumps{}, 2), p, n);
     expect_near(n, glm::dvec3(0, 0, -1) + 2.0 * noise::dnoise(p));
     // POV's DNoise at this point (the noise module's reference value).
     expect_near(noise::dnoise(p), {0.462106769680104, -0.073638712776967, -0.210533608108356}, 1e-12);
 
     glm::dvec3 w(0);
-    add_form(scene::pattern::Wrinkles{}, normal_of(scene::pattern::Wrinkles{}, 1), p, w);
+    apply_form(scene::pattern::Wrinkles{}, normal_of(scene::pattern::Wrinkles{}, 1), p, w);
     EXPECT_GT(w.x, 0);
     EXPECT_GT(w.y, 0);
     EXPECT_GT(w.z, 0);
@@ -216,6 +216,32 @@ TEST(Normal, NoiseForms) {
     const glm::dvec3 q{0.13, -0.27, 0.037};  // pattern point p
     expect_near(perturbed_normal(on_the_move, {0, 0, -1}, q),
                 glm::normalize(glm::dvec3(0, 0, -1) + noise::dnoise(p)), 1e-12);
+}
+
+// facets replace the normal (the amount does not count). Without coords the result depends on
+// the normal alone and is the same across a facet; with coords it depends on the point's cell.
+TEST(Normal, Facets) {
+    scene::pattern::Facets by_normal;
+    by_normal.size = 0.3;
+    scene::Normal n = normal_of(by_normal, 0.5);
+    const glm::dvec3 raw = glm::normalize(glm::dvec3(0.3, 0.2, -1));
+    const glm::dvec3 a = perturbed_normal(n, raw, {0, 0, 0});
+    EXPECT_NEAR(glm::length(a), 1.0, 1e-15);
+    EXPECT_EQ(perturbed_normal(n, raw, {5, -3, 2}), a);  // anywhere
+    n.amount = 7;
+    EXPECT_EQ(perturbed_normal(n, raw, {0, 0, 0}), a);
+    const glm::dvec3 near_raw = glm::normalize(raw + glm::dvec3(1e-6, 0, 0));
+    EXPECT_EQ(perturbed_normal(n, near_raw, {0, 0, 0}), a);  // the same facet
+
+    scene::pattern::Facets by_point;
+    by_point.coords = 0.5;
+    const scene::Normal c = normal_of(by_point);
+    const glm::dvec3 here = perturbed_normal(c, raw, {0.31, 0.22, 0.05});
+    EXPECT_NEAR(glm::length(here), 1.0, 1e-15);
+    EXPECT_NE(here, raw);
+    // A tilt tangent to the normal: never turned past the surface.
+    for (double x = -2; x < 2; x += 0.37)
+        EXPECT_GT(glm::dot(perturbed_normal(c, raw, {x, 0.3 * x, 0.1}), raw), 0) << x;
 }
 
 TEST(Normal, QuiltLeansAwayFromTheCubeCentre) {

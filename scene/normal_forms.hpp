@@ -35,7 +35,7 @@ template <> struct NormalForm<pattern::Waves> : DedicatedForm<false> {};
 
 template <> struct NormalForm<pattern::Quilted> : DedicatedForm<true> {};
 template <> struct NormalForm<pattern::Average> : DedicatedForm<true> {};  // its map, weighted
-template <> struct NormalForm<pattern::Facets> : DedicatedForm<false> {};
+template <> struct NormalForm<pattern::Facets> : DedicatedForm<true> {};
 
 namespace normal_form_detail {
 template <std::size_t... I>
