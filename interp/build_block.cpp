@@ -22,12 +22,14 @@ const std::vector<std::string> kData = {
     "default",   // `default { }`: the old spelling of #default
     "warp",      // read by the pattern it modifies (build_warp.cpp)
     "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
-    "slope"};            // `slope { ... }` (build_pattern_kinds.cpp)
+    "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
+    "slope_map"};        // read by its normal (build_normal.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
-    "subsurface", "image_map", "bump_map", "material_map", "image_pattern", "slope_map", "density", "density_map", "density_file", "spline",
+    "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
+    "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -49,12 +51,17 @@ void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     collect(p->pattern, out);
     for (const auto& e : p->pigment_map) collect(e.item, out);
 }
+void collect(const scene::NormalPtr& n, std::vector<scene::Unsupported>& out) {
+    if (!n) return;
+    collect(n->pattern, out);
+    for (const auto& e : n->normal_map) collect(e.item, out);
+}
 void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported>& out) {
     for (const auto& t : layers) {
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
-        if (t->normal) collect(t->normal->pattern, out);
+        collect(t->normal, out);
         for (const auto& e : t->texture_map) collect(e.item, out);
     }
 }

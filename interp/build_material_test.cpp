@@ -130,10 +130,10 @@ TEST_F(BuildMaterial, ObsoleteFinishIorIsKept) {
 }
 
 TEST_F(BuildMaterial, NormalPatternRecordedAsUnsupported) {
-    scene::Texture t = texture_of("sphere { 0, 1 normal { bumps 0.4 scale 0.2 } }");
-    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Bumps);
-    EXPECT_DOUBLE_EQ(t.normal->amount, 0.4);
-    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'bumps'");
+    scene::Texture t = texture_of("sphere { 0, 1 normal { dents 0.4 scale 0.2 } }");
+    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Dents);
+    EXPECT_EQ(t.normal->amount, double(0.4f));  // POV keeps it in single precision
+    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'dents'");
 }
 
 TEST_F(BuildMaterial, TextureIdentCopiesAndAcceptsModifiers) {

@@ -3,6 +3,7 @@
 // kind-specific arguments and modifiers are in build_pattern_kinds.cpp, warps in
 // build_warp.cpp.
 #include "interp/build_common.hpp"
+#include "scene/normal_forms.hpp"
 
 namespace lumen::interp {
 
@@ -23,15 +24,17 @@ scene::WaveType default_wave(PatternType type) {
     return triangle ? scene::WaveType::Triangle : scene::WaveType::Ramp;
 }
 
-// Sets the pattern's kind and marks it unsupported where lumen does not render it.
+// Sets the pattern's kind and marks it unsupported where lumen does not render it (as a
+// normal: scene/normal_forms.hpp).
 void set_kind(scene::Pattern& pattern, scene::PatternKind kind, const std::string& word,
               const std::string& owner, SourceLoc loc) {
     pattern.kind = std::move(kind);
     pattern.wave = default_wave(pattern.type());
-    if (!owner.empty())
-        mark_unsupported(pattern, owner + " '" + word + "'", loc);
-    else if (!scene::pattern_info(pattern.type()).rendered)
-        mark_unsupported(pattern, "pattern '" + word + "'", loc);
+    const PatternType type = pattern.type();
+    const bool rendered =
+        owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
+    if (!rendered)
+        mark_unsupported(pattern, (owner.empty() ? "pattern" : owner) + " '" + word + "'", loc);
 }
 
 // turbulence, octaves, omega, lambda: the classic turbulence (scene/pattern_steps.hpp).

@@ -231,12 +231,12 @@ TEST_F(BuildPattern, WarpParameters) {
     expect_vec(hole.repeat, {1.2, 0, 0});  // raised to centre + radius + turbulence
 }
 
-// A normal keeps what it is given, though normals do not render yet.
+// A normal keeps what it is given.
 TEST_F(BuildPattern, NormalModifiersAreKept) {
     const scene::Texture t = texture_of(
         "sphere { 0, 1 normal { checker normal { bumps } normal { dents } accuracy 0.1 "
         "no_bump_scale } }");
-    EXPECT_DOUBLE_EQ(t.normal->accuracy, 0.1);
+    EXPECT_EQ(t.normal->accuracy, double(0.1f));  // single precision, as in POV
     EXPECT_TRUE(t.normal->no_bump_scale);
     ASSERT_EQ(t.normal->normal_map.size(), 2u);
     EXPECT_DOUBLE_EQ(t.normal->normal_map[1].value, 1);

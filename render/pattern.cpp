@@ -108,12 +108,12 @@ const scene::ColourMap& hexagon_map() {
 }
 const scene::ColourMap& square_map() {
     static const scene::ColourMap m{
-        {0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)}, {3, rgb(1, 1, 0)}};
+        {0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)}, {3, rgb(1, 1, 0)}};
     return m;
 }
 const scene::ColourMap& triangular_map() {
-    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)},
-                                    {3, rgb(1, 0, 1)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 1, 0)}};
+    static const scene::ColourMap m{{0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)},
+                                    {3, rgb(1, 1, 0)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 0, 1)}};
     return m;
 }
 // POV-Ray's built-in maps of bozo, wood, marble and agate.

@@ -9,6 +9,7 @@
 #include "base/diagnostics.hpp"
 #include "render/fog.hpp"
 #include "render/frame.hpp"
+#include "render/normal.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
@@ -221,6 +222,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     RayColour out;
     glm::dvec3 filter(1);
+    glm::dvec3 top_normal = raw_n;  // refraction bends about the top layer's normal
     glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
     bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
@@ -230,7 +232,12 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         SurfaceSample s;
         s.point = hit.point;
         s.view = d;
-        s.normal = raw_n;  // normal perturbation is not implemented: Nl = N
+        // Each layer perturbs the surface normal on its own (POV applies normals from +Q8).
+        s.normal = layer.normal && quality >= 8 ? perturbed_normal(*layer.normal, raw_n, hit.point)
+                                                : raw_n;
+        if (i == 0) top_normal = s.normal;
+        s.raw_normal = raw_n;
+        s.object = hit.object;
         s.colour = rgb;
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
@@ -273,7 +280,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
             child.continued = true;
             t = trace(Ray{hit.point, d}, child, state, &child_depth);
         } else {
-            const glm::dvec3 nl = raw_n;  // the top layer's shading normal
+            const glm::dvec3 nl = top_normal;
             double n = glm::dot(d, nl);
             glm::dvec3 ln;
             if (n <= 0) {
