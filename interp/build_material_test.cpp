@@ -130,10 +130,10 @@ TEST_F(BuildMaterial, ObsoleteFinishIorIsKept) {
 }
 
 TEST_F(BuildMaterial, NormalPatternRecordedAsUnsupported) {
-    scene::Texture t = texture_of("sphere { 0, 1 normal { dents 0.4 scale 0.2 } }");
-    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Dents);
+    scene::Texture t = texture_of("sphere { 0, 1 normal { pavement bump_size 0.4 scale 0.2 } }");
+    EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Pavement);
     EXPECT_EQ(t.normal->amount, double(0.4f));  // POV keeps it in single precision
-    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'dents'");
+    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'pavement'");
 }
 
 TEST_F(BuildMaterial, TextureIdentCopiesAndAcceptsModifiers) {

@@ -12,8 +12,15 @@ using BuildNormal = BuildTest;
 
 std::string normal_text(std::string_view keyword) {
     std::string body(keyword);
-    if (keyword == "gradient") body += " y";
+    if (keyword == "gradient" || keyword == "slope") body += " y";
+    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
+    if (keyword == "mandel" || keyword == "tiling") body += " 10";
+    if (keyword == "julia") body += " <0.3, 0.2>, 10";
+    if (keyword == "magnet") body += " 1 mandel 10";
     if (keyword == "average") body += " normal_map { [1 gradient x] }";
+    if (keyword == "pigment_pattern") body += " { rgb 1 }";
+    if (keyword == "density_file")
+        body += std::string(" df3 \"") + LUMEN_SOURCE_DIR + "/tests/patterns/grid16.df3\"";
     return "sphere { 0, 1 normal { " + body + " } }";
 }
 
@@ -41,7 +48,8 @@ TEST_F(BuildNormal, EveryKindIsReportedUnlessItRendersAsANormal) {
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Average));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Gradient));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Facets));
-    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Dents));  // needs the scene's generator
+    EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Dents));
+    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Pavement));
     EXPECT_GE(rendered, 17);
 }
 
@@ -88,9 +96,9 @@ TEST_F(BuildNormal, SlopeMapAndNormalMapReplaceEachOther) {
 // An unrendered pattern inside a normal_map entry is reported like one at the top.
 TEST_F(BuildNormal, UnrenderedEntriesAreReported) {
     const scene::Scene s = run(
-        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 dents] } } }");
+        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 pavement] } } }");
     ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "normal 'dents'");
+    EXPECT_EQ(s.unsupported[0].feature, "normal 'pavement'");
     EXPECT_TRUE(run("sphere { 0, 1 normal { checker normal { quilted } normal { onion } } }")
                     .unsupported.empty());
 }
