@@ -11,16 +11,9 @@ namespace {
 using BuildNormal = BuildTest;
 
 std::string normal_text(std::string_view keyword) {
-    std::string body(keyword);
-    if (keyword == "gradient" || keyword == "slope") body += " y";
-    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
-    if (keyword == "mandel" || keyword == "tiling") body += " 10";
-    if (keyword == "julia") body += " <0.3, 0.2>, 10";
-    if (keyword == "magnet") body += " 1 mandel 10";
+    std::string body = pattern_with_arguments(keyword);
     if (keyword == "average") body += " normal_map { [1 gradient x] }";
     if (keyword == "pigment_pattern") body += " { rgb 1 }";
-    if (keyword == "density_file")
-        body += std::string(" df3 \"") + LUMEN_SOURCE_DIR + "/tests/patterns/grid16.df3\"";
     return "sphere { 0, 1 normal { " + body + " } }";
 }
 

@@ -10,15 +10,8 @@ namespace pattern = scene::pattern;
 
 // What each keyword needs after it to form a valid pigment.
 std::string pigment_text(std::string_view keyword) {
-    std::string body(keyword);
-    if (keyword == "gradient" || keyword == "slope") body += " y";
-    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
-    if (keyword == "mandel" || keyword == "tiling") body += " 10";
-    if (keyword == "julia") body += " <0.3, 0.2>, 10";
-    if (keyword == "magnet") body += " 1 mandel 10";
+    std::string body = pattern_with_arguments(keyword);
     if (keyword == "average") body += " pigment_map { [1 rgb 1] }";
-    if (keyword == "density_file")
-        body += std::string(" df3 \"") + LUMEN_SOURCE_DIR + "/tests/patterns/grid16.df3\"";
     return "sphere { 0, 1 pigment { " + body + " } }";
 }
 
