@@ -22,12 +22,14 @@ const std::vector<std::string> kData = {
     "default",   // `default { }`: the old spelling of #default
     "warp",      // read by the pattern it modifies (build_warp.cpp)
     "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
-    "slope"};            // `slope { ... }` (build_pattern_kinds.cpp)
+    "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
+    "slope_map"};        // read by its normal (build_normal.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
-    "subsurface", "image_map", "bump_map", "material_map", "image_pattern", "slope_map", "density", "density_map", "density_file", "spline",
+    "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
+    "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -49,13 +51,17 @@ void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     collect(p->pattern, out);
     for (const auto& e : p->pigment_map) collect(e.item, out);
 }
+void collect(const scene::NormalPtr& n, std::vector<scene::Unsupported>& out) {
+    if (!n) return;
+    collect(n->pattern, out);
+    for (const auto& e : n->normal_map) collect(e.item, out);
+}
 void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported>& out) {
     for (const auto& t : layers) {
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
-        if (t->finish && t->finish->unsupported) out.push_back(*t->finish->unsupported);
-        if (t->normal) collect(t->normal->pattern, out);
+        collect(t->normal, out);
         for (const auto& e : t->texture_map) collect(e.item, out);
     }
 }
@@ -217,6 +223,11 @@ void apply_default(BuildContext& ctx, const BlockValue& block) {
 }
 
 void finish_scene(BuildContext& ctx, scene::Scene& scene) {
+    // Without global_settings { noise_generator }, POV uses the original noise for scenes
+    // whose final #version is below 3.5.
+    scene::GlobalSettings& g = scene.globals;
+    if (!ctx.noise_generator_given && scene.language_version < 3.5) g.noise_generator = 1;
+    *ctx.pattern_globals = {g.noise_generator, g.number_of_waves};
     std::vector<scene::Unsupported> out;
     for (const auto& o : scene.objects) collect(o, out);
     if (scene.camera.unsupported) out.push_back(*scene.camera.unsupported);

@@ -3,6 +3,7 @@
 // kind-specific arguments and modifiers are in build_pattern_kinds.cpp, warps in
 // build_warp.cpp.
 #include "interp/build_common.hpp"
+#include "scene/normal_forms.hpp"
 
 namespace lumen::interp {
 
@@ -16,14 +17,24 @@ const scene::PatternInfo* find_pattern(std::string_view w) {
     return nullptr;
 }
 
-// Sets the pattern's kind and marks it unsupported where lumen does not render it.
+// POV gives marble, wood and the spirals the triangle wave when it reads their keyword.
+scene::WaveType default_wave(PatternType type) {
+    const bool triangle = type == PatternType::Marble || type == PatternType::Wood ||
+                          type == PatternType::Spiral1 || type == PatternType::Spiral2;
+    return triangle ? scene::WaveType::Triangle : scene::WaveType::Ramp;
+}
+
+// Sets the pattern's kind and marks it unsupported where lumen does not render it (as a
+// normal: scene/normal_forms.hpp).
 void set_kind(scene::Pattern& pattern, scene::PatternKind kind, const std::string& word,
               const std::string& owner, SourceLoc loc) {
     pattern.kind = std::move(kind);
-    if (!owner.empty())
-        mark_unsupported(pattern, owner + " '" + word + "'", loc);
-    else if (!scene::pattern_info(pattern.type()).rendered)
-        mark_unsupported(pattern, "pattern '" + word + "'", loc);
+    pattern.wave = default_wave(pattern.type());
+    const PatternType type = pattern.type();
+    const bool rendered =
+        owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
+    if (!rendered)
+        mark_unsupported(pattern, (owner.empty() ? "pattern" : owner) + " '" + word + "'", loc);
 }
 
 // turbulence, octaves, omega, lambda: the classic turbulence (scene/pattern_steps.hpp).
@@ -31,24 +42,18 @@ bool read_turbulence_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pa
     const std::string& w = kw.keyword;
     if (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda") return false;
     scene::TurbulenceParams& turb = pattern.steps.classic_turbulence();
-    if (w == "turbulence") {
-        turb.amount = cur.expect_vector(w);
-        mark_unsupported(pattern, "turbulence", kw.loc);  // needs the noise functions
-    } else if (w == "octaves") {
-        turb.octaves = cur.expect_int(w);
-    } else if (w == "omega") {
-        turb.omega = cur.expect_float(w);
-    } else {
-        turb.lambda = cur.expect_float(w);
-    }
+    if (w == "turbulence") turb.amount = cur.expect_vector(w);
+    else if (w == "octaves") turb.octaves = cur.expect_int(w);
+    else if (w == "omega") turb.omega = single_precision(cur.expect_float(w));
+    else turb.lambda = single_precision(cur.expect_float(w));
     return true;
 }
 
 // frequency, phase, the wave types and noise_generator.
 bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pattern) {
     const std::string& w = kw.keyword;
-    if (w == "frequency") pattern.frequency = cur.expect_float(w);
-    else if (w == "phase") pattern.phase = cur.expect_float(w);
+    if (w == "frequency") pattern.frequency = single_precision(cur.expect_float(w));
+    else if (w == "phase") pattern.phase = single_precision(cur.expect_float(w));
     else if (w == "ramp_wave") pattern.wave = scene::WaveType::Ramp;
     else if (w == "sine_wave") pattern.wave = scene::WaveType::Sine;
     else if (w == "triangle_wave") pattern.wave = scene::WaveType::Triangle;
@@ -56,7 +61,7 @@ bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patter
     else if (w == "cubic_wave") pattern.wave = scene::WaveType::Cubic;
     else if (w == "poly_wave") {
         pattern.wave = scene::WaveType::Poly;
-        if (auto e = cur.optional_float()) pattern.wave_exponent = *e;
+        if (auto e = cur.optional_float()) pattern.wave_exponent = single_precision(*e);
     } else if (w == "noise_generator") {
         const int g = cur.expect_int(w);
         if (g < 0 || g > 3) cur.fail(kw.loc, "noise_generator must be 0, 1, 2 or 3");
@@ -149,6 +154,7 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
     const std::string& w = kw.keyword;
     if (const scene::PatternInfo* p = find_pattern(w)) {
         set_kind(pattern, scene::make_pattern_kind(p->type), w, owner, kw.loc);
+        pattern.globals = cur.ctx().pattern_globals;
         read_pattern_arguments(cur, kw, pattern);
         return true;
     }

@@ -132,11 +132,12 @@ scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     return copy;
 }
 
+// The normal_map entries are evaluated in this normal's pattern space (scene::Normal): they
+// move with it without a copy of the transform.
 scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
     if (!n) return n;
     auto copy = std::make_shared<scene::Normal>(*n);
     copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->normal_map) e.item = transformed(e.item, t);
     return copy;
 }
 

@@ -28,8 +28,8 @@ scene::warp::Turbulence read_turbulence(ItemCursor& cur, SourceLoc loc) {
     t.amount = cur.expect_vector("turbulence");
     read_options(cur, {"octaves", "omega", "lambda"}, [&](const std::string& w) {
         if (w == "octaves") t.octaves = cur.expect_int(w);
-        else if (w == "omega") t.omega = cur.expect_float(w);
-        else if (w == "lambda") t.lambda = cur.expect_float(w);
+        else if (w == "omega") t.omega = single_precision(cur.expect_float(w));
+        else if (w == "lambda") t.lambda = single_precision(cur.expect_float(w));
         else return false;
         return true;
     });
@@ -144,8 +144,6 @@ scene::PatternStep read_warp_step(ItemCursor& cur) {
 void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern) {
     ItemCursor sub(cur.ctx(), block);
     scene::PatternStep step = read_warp_step(sub);
-    if (std::holds_alternative<scene::warp::Turbulence>(step))
-        mark_unsupported(pattern, "warp", block.loc);  // evaluated once the noise issue lands
     pattern.steps.steps.push_back(std::move(step));
 }
 

@@ -117,9 +117,24 @@ Json finish(const scene::Finish& f) {
 }
 
 Json normal(const scene::Normal& n) {
+    const scene::Normal d;
     Json o;
     put_nonempty(o, "pattern", pattern(n.pattern));
-    put_if(o, "amount", n.amount, scene::Normal{}.amount);
+    put_if(o, "amount", n.amount, d.amount);
+    put_if(o, "accuracy", n.accuracy, d.accuracy);
+    put_if(o, "no_bump_scale", n.no_bump_scale, d.no_bump_scale);
+    Json nm = Json::array();
+    for (const auto& e : n.normal_map) {
+        Json entry;
+        entry.put("value", Json::num(e.value));
+        if (e.item) entry.put("normal", normal(*e.item));
+        nm.push(entry);
+    }
+    put_nonempty(o, "normal_map", nm);
+    Json sm = Json::array();
+    for (const auto& e : n.slope_map)
+        sm.push(Json::array().push(Json::num(e.value)).push(Json::num(e.item.x)).push(Json::num(e.item.y)));
+    put_nonempty(o, "slope_map", sm);
     return o;
 }
 
@@ -403,7 +418,10 @@ Json fog(const scene::Fog& f) {
     put_if(o, "fog_type", double(f.type), double(d.type));
     put_if(o, "distance", f.distance, d.distance);
     put_if(o, "colour", f.colour, d.colour);
-    put_if(o, "turbulence", f.turbulence, d.turbulence);
+    put_if(o, "turbulence", f.turbulence.amount, d.turbulence.amount);
+    put_if(o, "octaves", double(f.turbulence.octaves), double(d.turbulence.octaves));
+    put_if(o, "omega", f.turbulence.omega, d.turbulence.omega);
+    put_if(o, "lambda", f.turbulence.lambda, d.turbulence.lambda);
     put_if(o, "turb_depth", f.turb_depth, d.turb_depth);
     put_if(o, "offset", f.offset, d.offset);
     put_if(o, "alt", f.alt, d.alt);

@@ -27,7 +27,8 @@ double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_poin
                      const SurfacePoint* surface = nullptr);
 // The two halves of pattern_value: the world point mapped into pattern space, and the value
 // at a point already there. A pigment's map entries take their parent's pattern point as
-// their world point (POV-Ray: they see the parent's transforms and warps).
+// their world point (POV-Ray: they see the parent's transforms and warps); a normal samples
+// its pattern's slope around one warped point, and POV does not warp the samples again.
 glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point);
 double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point,
                         const SurfacePoint* surface = nullptr);

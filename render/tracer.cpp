@@ -9,6 +9,7 @@
 #include "base/diagnostics.hpp"
 #include "render/fog.hpp"
 #include "render/frame.hpp"
+#include "render/normal.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
@@ -97,6 +98,7 @@ void Tracer::init(const std::vector<LightSource>& lights) {
     env_.ambient_light = scene.globals.ambient_light;
     env_.irid_wavelength = scene.globals.irid_wavelength;
     env_.fogs = &scene.fogs;
+    env_.noise_generator = noise::resolve_generator(0, scene.globals.noise_generator);
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
@@ -220,6 +222,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     RayColour out;
     glm::dvec3 filter(1);
+    glm::dvec3 top_normal = raw_n;  // refraction bends about the top layer's normal
     glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
     bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
@@ -229,7 +232,12 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         SurfaceSample s;
         s.point = hit.point;
         s.view = d;
-        s.normal = raw_n;  // normal perturbation is not implemented: Nl = N
+        // Each layer perturbs the surface normal on its own (POV applies normals from +Q8).
+        s.normal = layer.normal && quality >= 8 ? perturbed_normal(*layer.normal, raw_n, hit.point)
+                                                : raw_n;
+        if (i == 0) top_normal = s.normal;
+        s.raw_normal = raw_n;
+        s.object = hit.object;
         s.colour = rgb;
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
@@ -272,7 +280,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
             child.continued = true;
             t = trace(Ray{hit.point, d}, child, state, &child_depth);
         } else {
-            const glm::dvec3 nl = raw_n;  // the top layer's shading normal
+            const glm::dvec3 nl = top_normal;
             double n = glm::dot(d, nl);
             glm::dvec3 ln;
             if (n <= 0) {
@@ -333,7 +341,7 @@ void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
                        const InteriorList& interiors) const {
     // No fog while the ray is inside a solid (non-hollow) object.
     if (scene_.fogs.empty() || interiors.in_solid()) return;
-    const FogEffect e = fog_along(scene_.fogs, ray, depth);
+    const FogEffect e = fog_along(scene_.fogs, ray, depth, env_.noise_generator);
     c.rgb = e.added + e.attenuation * c.rgb;
     c.transmit *= e.transmit;
 }
