@@ -35,7 +35,7 @@ void read_density_file(ItemCursor& cur, const Item& kw, pattern::DensityFile& d)
 }
 
 // Numbers, vectors and strings after the keyword of a kind lumen does not model yet
-// (`julia <0.3, 0.5> 30`, `density_file df3 "f"`).
+// (`spiral1 3`, `cells`).
 void read_raw_arguments(ItemCursor& cur, pattern::Arguments& args) {
     cur.accept_keyword("df3");
     while (cur.next_is_vector_like() || cur.next_is<std::string>()) {

@@ -26,10 +26,13 @@ struct Orbit {
     double min_dist2;
 };
 
+// A type or modulus written as a float, truncated; out of any int's range (or NaN) it is -1.
+int truncated(double v) { return v > -1e9 && v < 1e9 ? int(v) : -1; }
+
 double exterior_value(const pattern::Fractal& k, const Orbit& o) {
     const double f = k.exterior.y;
     const double a = o.z.a, b = o.z.b;
-    switch (int(k.exterior.x)) {
+    switch (truncated(k.exterior.x)) {
         case 0: return f;
         case 1: return double(o.steps) / k.iterations;
         case 2: return a * f;
@@ -37,8 +40,8 @@ double exterior_value(const pattern::Fractal& k, const Orbit& o) {
         case 4: return a * a * f;
         case 5: return b * b * f;
         case 6: return std::sqrt(a * a + b * b) * f;
-        case 7: return double(o.steps % std::max(1, int(f))) / f;
-        case 8: return double(o.steps % std::max(1, int(1 + f))) / f;
+        case 7: return double(o.steps % std::max(1, truncated(f))) / f;
+        case 8: return double(o.steps % std::max(1, truncated(1 + f))) / f;
     }
     return 0;
 }
@@ -46,7 +49,7 @@ double exterior_value(const pattern::Fractal& k, const Orbit& o) {
 double interior_value(const pattern::Fractal& k, const Orbit& o) {
     const double f = k.interior.y;
     const double a = o.z.a, b = o.z.b;
-    switch (int(k.interior.x)) {
+    switch (truncated(k.interior.x)) {
         case 0: return f;
         case 1: return std::sqrt(o.min_dist2) * f;
         case 2: return a * f;

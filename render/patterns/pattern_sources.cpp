@@ -15,7 +15,7 @@ struct Cell {
 };
 Cell cell(double v, int n) {
     const double s = v * n;
-    const int i = int(s);
+    const int i = std::min(int(s), n - 1);  // v * n may round up to n
     return {i, (i + 1) % n, s - i};
 }
 
@@ -30,7 +30,7 @@ struct CubicAxis {
 };
 CubicAxis cubic_axis(double v, int n) {
     const double s = v * n;
-    const int i = int(s);
+    const int i = std::min(int(s), n - 1);
     const double t = s - i, t2 = t * t, t3 = t2 * t;
     CubicAxis c;
     c.index[0] = i > 0 ? i - 1 : int(~uint64_t(0) % uint64_t(n));
@@ -69,7 +69,7 @@ double evaluate(const scene::pattern::PigmentPattern& k, const glm::dvec3& p) {
 // eight voxels around p with voxel i at i/n (not its centre), wrapping at the far faces.
 double evaluate(const scene::pattern::DensityFile& k, const glm::dvec3& p) {
     const scene::pattern::DensityGrid& g = *k.grid;
-    if (p.x < 0 || p.x >= 1 || p.y < 0 || p.y >= 1 || p.z < 0 || p.z >= 1) return 0;
+    if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1 && p.z >= 0 && p.z < 1)) return 0;  // NaN too
     if (k.interpolate % 10 == 2) return tricubic(g, p);
     const Cell x = cell(p.x, g.nx), y = cell(p.y, g.ny), z = cell(p.z, g.nz);
     if (k.interpolate % 10 != 1) return g.at(x.i, y.i, z.i);

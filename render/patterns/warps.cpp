@@ -102,7 +102,7 @@ glm::dvec3 warp_point(const scene::warp::Repeat& w, const glm::dvec3& point) {
     const double width = w.direction[a];
     const double block = double(float(std::floor(p[a] / width)));
     p[a] -= block * width;
-    if (long(block) & 1) {
+    if (std::fmod(block, 2.0) != 0) {  // odd (and no int overflow far out)
         for (int i = 0; i < 3; ++i)
             if (w.flip[i] != 0) p[i] = -p[i];
         if (w.flip[a] != 0) p[a] += width;
@@ -123,7 +123,7 @@ glm::dvec3 warp_point(const scene::warp::BlackHole& w, const glm::dvec3& p) {
         if (w.repeat[a] < kEpsilon) continue;
         const double k = std::floor(p[a] / w.repeat[a]);
         centre[a] += k * w.repeat[a];
-        cell[a] = int(k);
+        cell[a] = int(std::fmod(k, 4096.0));  // the hash takes it mod 4096 anyway
         repeated = true;
     }
     if (repeated && w.turbulence != glm::dvec3(0)) {
