@@ -7,6 +7,7 @@
 #include <string>
 
 #include "interp/interpret.hpp"
+#include "render/frame.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 
 namespace lumen::cli {
@@ -20,7 +21,8 @@ std::vector<std::string> mesh_warnings(const std::string& objects) {
         "camera { location <0, 3, -6> look_at 0 }\nlight_source { <2, 5, -3> rgb 1 }\n" +
             objects,
         {});
-    return render::radiosity::build_scene_mesh(scene, 0.5).warnings;
+    return render::radiosity::build_scene_mesh(render::RenderFrame(scene).geometry(), 0.5)
+        .warnings;
 }
 
 int count_containing(const std::vector<std::string>& w, const std::string& text) {

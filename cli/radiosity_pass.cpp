@@ -7,8 +7,8 @@
 
 #include "render/camera.hpp"
 
-#include "interp/dump_scene.hpp"
 #include "render/radiosity/solution_io.hpp"
+#include "render/radiosity/solution_key.hpp"
 
 namespace lumen::cli {
 
@@ -28,15 +28,6 @@ void apply_radiosity_switch(scene::Scene& scene, const rad::RadiosityOptions& o)
     if (!o.enabled) return;
     if (!*o.enabled) scene.globals.radiosity.reset();
     else if (!scene.globals.radiosity) scene.globals.radiosity = scene::RadiositySettings{};
-}
-
-uint64_t scene_key(const scene::Scene& scene) {
-    scene::Scene copy = scene;
-    copy.camera = scene::Camera{};
-    const std::string json = interp::dump_scene_json(copy);
-    uint64_t h = 1469598103934665603ULL;  // FNV-1a
-    for (unsigned char c : json) h = (h ^ c) * 1099511628211ULL;
-    return h;
 }
 
 const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
@@ -60,10 +51,10 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
     receivers_.reset();
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
-    mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(scene, options.patch_size));
+    mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(geometry, options.patch_size));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
 
-    const uint64_t key = scene_key(scene);
+    const uint64_t key = rad::solution_key(frame, *mesh_, options);
     const size_t unknowns = mesh_->unknowns();
     reused_ = loaded_ = false;
     if (options.from_file && !options.file.empty()) {

@@ -21,9 +21,6 @@ namespace lumen::cli {
 // Radiosity=on gives a scene without a block POV's defaults; Radiosity=off drops the block.
 void apply_radiosity_switch(scene::Scene& scene, const render::radiosity::RadiosityOptions& o);
 
-// A hash of everything in the scene but the camera.
-uint64_t scene_key(const scene::Scene& scene);
-
 class RadiosityPass {
 public:
     // Prepares the indirect light for the frame, through its geometry and lights (the frame

@@ -8,7 +8,10 @@
 #include "cli/radiosity_pass.hpp"
 #include "interp/interpret.hpp"
 #include "base/diagnostics.hpp"
+#include "render/frame.hpp"
+#include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/solution_io.hpp"
+#include "render/radiosity/solution_key.hpp"
 
 namespace lumen::cli {
 namespace {
@@ -34,6 +37,13 @@ render::radiosity::RadiosityOptions small() {
     o.ff_rays = 16;
     o.display = render::radiosity::DisplayMode::Preview;
     return o;
+}
+
+// The reuse key of a scene's solution under `o`, as the pass computes it.
+uint64_t key_of(const scene::Scene& s, const render::radiosity::RadiosityOptions& o = small()) {
+    const render::RenderFrame frame(s);
+    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), o.patch_size);
+    return render::radiosity::solution_key(frame, mesh, o);
 }
 
 render::RenderOptions view() {
@@ -70,14 +80,80 @@ TEST(RadiosityPass, ReusesTheSolutionWhenOnlyTheCameraMoves) {
     EXPECT_FALSE(pass.reused());
     const auto first = pass.solution()->G;
     const scene::Scene b = parse(sources, room(-6));  // camera moved
-    EXPECT_EQ(scene_key(a), scene_key(b));
+    EXPECT_EQ(key_of(a), key_of(b));
     ASSERT_NE(pass.prepare(b, small(), view(), log), nullptr);
     EXPECT_TRUE(pass.reused());
     EXPECT_EQ(pass.solution()->G, first);
     const scene::Scene c = parse(sources, room(-6, 0.5));  // the floor changed
-    EXPECT_NE(scene_key(b), scene_key(c));
+    EXPECT_NE(key_of(b), key_of(c));
     ASSERT_NE(pass.prepare(c, small(), view(), log), nullptr);
     EXPECT_FALSE(pass.reused());
+}
+
+// The key follows what the solution depends on: the camera, highlights and the display
+// options leave it alone; lights, the sky, an occluder the mesher skips, a pigment's filter
+// and the solver's options change it.
+TEST(RadiosityPass, ReuseKeyFollowsWhatTheSolutionDependsOn) {
+    SourceManager sources;
+    const std::string base = room(-5);
+    const uint64_t key = key_of(parse(sources, base));
+    auto with = [&](const std::string& extra) { return key_of(parse(sources, base + extra)); };
+    auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string text = base;
+        text.replace(text.find(from), from.size(), to);
+        return key_of(parse(sources, text));
+    };
+    EXPECT_EQ(key_of(parse(sources, room(-7))), key);
+    EXPECT_EQ(replaced("finish { diffuse 1 }", "finish { diffuse 1 phong 0.9 reflection 0.3 }"),
+              key);
+    auto display = small();
+    display.display = render::radiosity::DisplayMode::Gather;
+    display.gather_rays = 400;
+    EXPECT_EQ(key_of(parse(sources, base), display), key);
+
+    EXPECT_NE(replaced("light_source { <0, 1.5, 0> rgb 1 }", "light_source { <0, 1.5, 0> rgb 0.9 }"),
+              key);
+    EXPECT_NE(with("background { rgb <0, 0, 0.2> }\n"), key);
+    EXPECT_NE(with("sky_sphere { pigment { rgb 0.3 } }\n"), key);
+    const std::string blocker =
+        "intersection { sphere { <0, 1, 0>, 0.3 } box { -1, 1 } pigment { rgb 1 } }\n";
+    const uint64_t blocked = with(blocker);
+    EXPECT_NE(blocked, key);  // not meshed (a CSG other than union), but it casts shadows
+    EXPECT_NE(with("intersection { sphere { <0, 1.2, 0>, 0.3 } box { -1, 1 } pigment { rgb 1 } }\n"),
+              blocked);
+    EXPECT_NE(with("intersection { sphere { <0, 1, 0>, 0.3 } box { -1, 1 } "
+                   "pigment { rgbf <1, 1, 1, 0.5> } }\n"),
+              blocked);
+    auto rays = small();
+    rays.ff_rays = 32;
+    EXPECT_NE(key_of(parse(sources, base), rays), key);
+}
+
+// The mesher meshes what the tracer compiled: a union's members with the union's transform
+// and texture, and a light's looks_like object.
+TEST(RadiosityPass, MeshesTheCompiledObjects) {
+    SourceManager sources;
+    const auto elements = [&](const std::string& extra) {
+        const scene::Scene s = parse(sources, room(-5) + extra);
+        const render::RenderFrame frame(s);
+        return render::radiosity::build_scene_mesh(frame.geometry(), 1.0).elements;
+    };
+    const size_t bare = elements("").size();
+    const std::string boxed =
+        "union { box { <0, 0, 0>, <0.5, 0.5, 0.5> } translate <0, 0.5, 0> pigment { rgb 1 } }\n";
+    EXPECT_GT(elements(boxed).size(), bare);
+    const scene::Scene s = parse(sources, room(-5) + boxed);
+    const render::RenderFrame frame(s);
+    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), 1.0);
+    double highest = -1e9;  // below the ceiling, over the box: the floor (0) or the box
+    for (const auto& v : mesh.vertices)
+        if (v.position.x > -1e-6 && v.position.x < 0.5 + 1e-6 && v.position.y < 1.9)
+            highest = std::max(highest, v.position.y);
+    EXPECT_NEAR(highest, 1.0, 1e-9);  // the union's translate reached the box
+    EXPECT_GT(elements("light_source { <1, 1, 1> rgb 1 looks_like { sphere { 0, 0.2 "
+                       "pigment { rgb 1 } } } }\n")
+                  .size(),
+              bare);
 }
 
 TEST(RadiosityPass, CeilingGetsOnlyIndirectLightAndNoNaN) {
@@ -116,15 +192,15 @@ TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     o.to_file = true;
     ASSERT_NE(pass.prepare(s, o, view(), log), nullptr);
     const auto saved = *pass.solution();
-    const auto loaded = render::radiosity::load_solution(path, scene_key(s), saved.B.size());
+    const auto loaded = render::radiosity::load_solution(path, key_of(s, o), saved.B.size());
     ASSERT_EQ(loaded.B.size(), saved.B.size());
     for (size_t i = 0; i < saved.B.size(); ++i) {
         EXPECT_EQ(loaded.B[i], saved.B[i]);
         EXPECT_EQ(loaded.G[i], saved.G[i]);
     }
-    EXPECT_THROW(render::radiosity::load_solution(path, scene_key(s) + 1, saved.B.size()),
+    EXPECT_THROW(render::radiosity::load_solution(path, key_of(s, o) + 1, saved.B.size()),
                  LumenError);
-    EXPECT_THROW(render::radiosity::load_solution(path, scene_key(s), saved.B.size() + 2),
+    EXPECT_THROW(render::radiosity::load_solution(path, key_of(s, o), saved.B.size() + 2),
                  LumenError);
     // Loading through the pass gives the same values.
     RadiosityPass again;
@@ -167,7 +243,8 @@ TEST(RadiosityPass, FormFactorMethodsAgreeOnAScene) {
         line = pass.summary();
         // Over the vertex sides of the floor's top and the ceiling's underside that face
         // into the room (not the boxes' insides, where thin-box corners leak).
-        const auto mesh = render::radiosity::build_scene_mesh(s, o.patch_size);
+        const auto mesh = render::radiosity::build_scene_mesh(
+            render::RenderFrame(s).geometry(), o.patch_size);
         double sum = 0;
         int n = 0;
         for (size_t u = 0; u < mesh.unknowns(); ++u) {
@@ -254,7 +331,8 @@ TEST(RadiosityPass, BrillianceShapesTheDirectLight) {
         RadiosityPass pass;
         std::vector<std::string> log;
         EXPECT_NE(pass.prepare(s, small(), view(), log), nullptr);
-        const auto mesh = render::radiosity::build_scene_mesh(s, small().patch_size);
+        const auto mesh = render::radiosity::build_scene_mesh(
+            render::RenderFrame(s).geometry(), small().patch_size);
         for (size_t v = 0; v < mesh.vertices.size(); ++v)
             if (glm::length(mesh.vertices[v].position) < 1e-9 && mesh.vertices[v].normal.y > 0.5)
                 return pass.solution()->B[2 * v].x;
@@ -313,7 +391,8 @@ TEST(RadiosityPass, EscapingRaysSeeTheSkySphere) {
     std::vector<std::string> log;
     ASSERT_NE(pass.prepare(s, small(), view(), log), nullptr);
     for (const std::string& l : log) EXPECT_EQ(l.find("sky_sphere"), std::string::npos) << l;
-    const auto mesh = render::radiosity::build_scene_mesh(s, small().patch_size);
+    const auto mesh = render::radiosity::build_scene_mesh(
+            render::RenderFrame(s).geometry(), small().patch_size);
     int checked = 0;
     for (size_t v = 0; v < mesh.vertices.size(); ++v) {
         if (std::fabs(mesh.vertices[v].position.y) > 1e-9 || mesh.vertices[v].normal.y < 0.5) continue;

@@ -20,13 +20,16 @@ const std::vector<std::string> kData = {
     "texture_list", "face_indices", "normal_indices", "uv_indices", "clipped_by", "bounded_by",
     "looks_like", "projected_through", "global_settings", "background", "interior_texture",
     "default",   // `default { }`: the old spelling of #default
-    "warp"};     // read by the pattern it modifies (build_warp.cpp)
+    "warp",      // read by the pattern it modifies (build_warp.cpp)
+    "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
+    "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
+    "slope_map"};        // read by its normal (build_normal.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
     "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
-    "pigment_pattern", "slope_map", "density", "density_map", "density_file", "spline",
+    "density", "density_map", "density_file", "spline",
     "function", "rainbow", "tiles", "mesh_camera"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -38,20 +41,27 @@ template <class T> Value make(const T& v, SourceLoc loc) {
 }
 
 // Every Unsupported reachable from a texture / pigment / normal.
+void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out);
 void collect(const scene::Pattern& p, std::vector<scene::Unsupported>& out) {
     if (p.unsupported) out.push_back(*p.unsupported);
+    if (const auto* k = std::get_if<scene::pattern::PigmentPattern>(&p.kind)) collect(k->pigment, out);
 }
 void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     if (!p) return;
     collect(p->pattern, out);
     for (const auto& e : p->pigment_map) collect(e.item, out);
 }
+void collect(const scene::NormalPtr& n, std::vector<scene::Unsupported>& out) {
+    if (!n) return;
+    collect(n->pattern, out);
+    for (const auto& e : n->normal_map) collect(e.item, out);
+}
 void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported>& out) {
     for (const auto& t : layers) {
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
-        if (t->normal) collect(t->normal->pattern, out);
+        collect(t->normal, out);
         for (const auto& e : t->texture_map) collect(e.item, out);
     }
 }

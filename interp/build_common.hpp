@@ -23,8 +23,9 @@ const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
 // Patterns move with everything written after them: a transform appends to the pattern's
-// steps. A map's entries are evaluated at the point their parent's steps give (as POV-Ray
-// does), so they move with it and are not transformed themselves.
+// steps. Map entries are not transformed: a pigment's and a texture's entries are evaluated at
+// their parent's pattern point (as POV-Ray does), and a normal's normal_map entries live in its
+// pattern space.
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
@@ -32,8 +33,9 @@ scene::LayeredTexture transformed(const scene::LayeredTexture& layers, const sce
 
 // ---- patterns (build_pattern.cpp) -----------------------------------------------------------
 // If `kw` (already consumed) is a pattern type or pattern modifier, reads its arguments into
-// `pattern` and returns true. `owner` prefixes unsupported features ("normal" -> "normal
-// 'bumps'"; "" for pigments and textures -> "pattern 'bozo'").
+// `pattern` and returns true. `owner` is "normal" in normals, whose kinds render as normals
+// (scene/normal_forms.hpp) and are reported as "normal 'bumps'"; "" for pigments and textures
+// ("pattern 'bozo'").
 bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pattern,
                           const std::string& owner);
 // How many list entries `checker A, B` style patterns take (0 = no list form).
@@ -55,6 +57,8 @@ const std::vector<std::string>& pattern_kind_keywords();
 inline double single_precision(double v) {
     return std::fabs(v) <= 3.4028234663852886e38 ? double(float(v)) : v;
 }
+// The body of `slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }`.
+void read_slope_block(ItemCursor& cur, scene::pattern::Slope& slope);
 // `warp { ... }`: appends the warp to the pattern's steps (build_warp.cpp).
 void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern);
 
@@ -63,6 +67,7 @@ scene::ColourMap build_colour_map(ItemCursor& cur);
 scene::PigmentMap build_pigment_map(ItemCursor& cur);
 scene::TextureMap build_texture_map(ItemCursor& cur);
 scene::NormalMap build_normal_map(ItemCursor& cur);
+scene::SlopeMap build_slope_map(ItemCursor& cur);  // a slope_map block's body
 
 // ---- materials (build_pigment/texture/finish/normal/interior/material.cpp) -------------------
 // `base`: the pigment/normal the block edits (see edit_pigment); null = the #default one.

@@ -1,5 +1,5 @@
-// color_map, pigment_map, texture_map and normal_map: lists of `[value body]` entries kept in
-// the order written (POV does not sort them).
+// color_map, pigment_map, texture_map, normal_map and slope_map: lists of `[value body]`
+// entries kept in the order written (POV does not sort them).
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {
@@ -71,6 +71,28 @@ scene::NormalMap build_normal_map(ItemCursor& cur) {
     read_entries<NormalMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {
         out.push_back({v, build_normal(e)});
     });
+    return out;
+}
+
+scene::SlopeMap build_slope_map(ItemCursor& cur) {
+    scene::SlopeMap out;
+    while (!cur.at_end()) {
+        const Item& it = cur.next();
+        if (const BlockValue* declared = block_of(it, "slope_map")) {  // `slope_map { S }`
+            ItemCursor inner(cur.ctx(), *declared);
+            const scene::SlopeMap m = build_slope_map(inner);
+            out.insert(out.end(), m.begin(), m.end());
+            continue;
+        }
+        if (it.kind != Item::Kind::MapEntry) cur.fail_unexpected(it, {});
+        ItemCursor e(cur.ctx(), it.entry, cur.what() + " entry", it.loc);
+        // POV keeps the keys in single precision, like every map's.
+        const double key = double(float(e.expect_float("")));
+        const std::vector<double> hs = e.expect_vecn("");  // <height, slope>; a float f is <f, f>
+        if (hs.size() > 2) e.fail(it.loc, "a slope_map entry takes <height, slope>");
+        out.push_back({key, {hs[0], hs.size() > 1 ? hs[1] : hs[0]}});
+        if (!e.at_end()) e.fail_unexpected(e.peek(), {});
+    }
     return out;
 }
 

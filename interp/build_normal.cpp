@@ -1,5 +1,6 @@
-// normal { [Ident] pattern [amount] [bump_size f] [normal_map] modifiers }. Normal
-// perturbation is not rendered yet: every pattern marks the normal unsupported.
+// normal { [Ident] pattern [amount] [bump_size f] [accuracy f] [no_bump_scale]
+// [normal_map | slope_map | list entries] modifiers }. A normal renders when its pattern does
+// as a normal (scene/normal_forms.hpp); otherwise the pattern is marked unsupported.
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {
@@ -9,11 +10,21 @@ namespace {
 const std::vector<std::string>& normal_keywords() {
     static const std::vector<std::string> k = [] {
         std::vector<std::string> v = pattern_keywords();
-        for (const char* w : {"bump_size", "normal_map", "accuracy", "no_bump_scale"})
+        for (const char* w : {"bump_size", "normal_map", "slope_map", "accuracy", "no_bump_scale"})
             v.push_back(w);
         return v;
     }();
     return k;
+}
+
+// POV keeps the amount and the accuracy in single precision.
+double as_float(double v) { return double(float(v)); }
+
+// A normal_map or list entries replace the slope_map and the other way round: POV keeps one
+// map per normal.
+void set_normal_map(scene::Normal& n, scene::NormalMap map) {
+    n.normal_map = std::move(map);
+    n.slope_map.clear();
 }
 
 }  // namespace
@@ -26,27 +37,34 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
     n.loc = cur.block_loc();
     while (!cur.at_end()) {
         const Item& item = cur.next();
-        // Normal maps and list entries (`checker normal{A} normal{B}`, valued 0, 1, ...) are
-        // kept; they render once normal patterns do (the pattern's unsupported mark).
+        // List entries: `checker normal{A} normal{B}`, valued 0, 1, ...
         if (item.kind == Item::Kind::Value && item.value.is<std::shared_ptr<const NormalMapValue>>()) {
-            n.normal_map = item.value.as<std::shared_ptr<const NormalMapValue>>()->entries;
+            set_normal_map(n, item.value.as<std::shared_ptr<const NormalMapValue>>()->entries);
             continue;
         }
         if (item.kind == Item::Kind::Value && item.value.is<scene::NormalPtr>()) {
-            n.normal_map.push_back({double(n.normal_map.size()), item.value.as<scene::NormalPtr>()});
+            scene::NormalMap entries = n.normal_map;
+            entries.push_back({double(entries.size()), item.value.as<scene::NormalPtr>()});
+            set_normal_map(n, std::move(entries));
             continue;
         }
         if (item.kind == Item::Kind::Value && item.value.is<double>()) {  // `bumps 0.5`
-            n.amount = item.value.as<double>();
+            n.amount = as_float(item.value.as<double>());
+            continue;
+        }
+        if (const BlockValue* slopes = block_of(item, "slope_map")) {
+            ItemCursor body(cur.ctx(), *slopes);
+            n.slope_map = build_slope_map(body);
+            n.normal_map.clear();
             continue;
         }
         if (item.kind == Item::Kind::Keyword) {
             const std::string& w = item.keyword;
-            if (w == "bump_size") { n.amount = cur.expect_float(w); continue; }
+            if (w == "bump_size") { n.amount = as_float(cur.expect_float(w)); continue; }
             if (w == "no_bump_scale") { n.no_bump_scale = cur.optional_bool(); continue; }
-            if (w == "accuracy") { n.accuracy = cur.expect_float(w); continue; }
+            if (w == "accuracy") { n.accuracy = as_float(cur.expect_float(w)); continue; }
             if (w == "normal_map") {
-                n.normal_map = cur.expect<std::shared_ptr<const NormalMapValue>>(w, "a normal_map")->entries;
+                set_normal_map(n, cur.expect<std::shared_ptr<const NormalMapValue>>(w, "a normal_map")->entries);
                 continue;
             }
         }

@@ -3,6 +3,7 @@
 // kind-specific arguments and modifiers are in build_pattern_kinds.cpp, warps in
 // build_warp.cpp.
 #include "interp/build_common.hpp"
+#include "scene/normal_forms.hpp"
 
 namespace lumen::interp {
 
@@ -23,15 +24,17 @@ scene::WaveType default_wave(PatternType type) {
     return triangle ? scene::WaveType::Triangle : scene::WaveType::Ramp;
 }
 
-// Sets the pattern's kind and marks it unsupported where lumen does not render it.
-void set_kind(scene::Pattern& pattern, PatternType type, const std::string& word,
+// Sets the pattern's kind and marks it unsupported where lumen does not render it (as a
+// normal: scene/normal_forms.hpp).
+void set_kind(scene::Pattern& pattern, scene::PatternKind kind, const std::string& word,
               const std::string& owner, SourceLoc loc) {
-    pattern.kind = scene::make_pattern_kind(type);
-    pattern.wave = default_wave(type);
-    if (!owner.empty())
-        mark_unsupported(pattern, owner + " '" + word + "'", loc);
-    else if (!scene::pattern_info(type).rendered)
-        mark_unsupported(pattern, "pattern '" + word + "'", loc);
+    pattern.kind = std::move(kind);
+    pattern.wave = default_wave(pattern.type());
+    const PatternType type = pattern.type();
+    const bool rendered =
+        owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
+    if (!rendered)
+        mark_unsupported(pattern, (owner.empty() ? "pattern" : owner) + " '" + word + "'", loc);
 }
 
 // turbulence, octaves, omega, lambda: the classic turbulence (scene/pattern_steps.hpp).
@@ -118,8 +121,22 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
         read_warp(cur, *warp, pattern);
         return true;
     }
+    if (const BlockValue* b = block_of(kw, "pigment_pattern")) {
+        ItemCursor sub(cur.ctx(), *b);
+        scene::pattern::PigmentPattern k;
+        k.pigment = build_pigment(sub);
+        set_kind(pattern, std::move(k), "pigment_pattern", owner, kw.loc);
+        return true;
+    }
+    if (const BlockValue* b = block_of(kw, "slope")) {
+        ItemCursor sub(cur.ctx(), *b);
+        scene::pattern::Slope k;
+        read_slope_block(sub, k);
+        set_kind(pattern, std::move(k), "slope", owner, kw.loc);
+        return true;
+    }
     if (kw.kind == Item::Kind::Value && kw.value.is<scene::Unsupported>()) {
-        // image_map { }, bump_map { }, slope { }, pigment_pattern { }, ...
+        // image_map { }, bump_map { }, slope { }, ...
         mark_unsupported(pattern, kw.value.as<scene::Unsupported>().feature, kw.loc);
         return true;
     }
@@ -136,7 +153,7 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
     if (kw.kind != Item::Kind::Keyword) return false;
     const std::string& w = kw.keyword;
     if (const scene::PatternInfo* p = find_pattern(w)) {
-        set_kind(pattern, p->type, w, owner, kw.loc);
+        set_kind(pattern, scene::make_pattern_kind(p->type), w, owner, kw.loc);
         pattern.globals = cur.ctx().pattern_globals;
         read_pattern_arguments(cur, kw, pattern);
         return true;

@@ -7,7 +7,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/file_resolver.hpp"
 #include "interp/build_common.hpp"
+#include "interp/df3_file.hpp"
 
 namespace lumen::interp {
 
@@ -23,8 +25,17 @@ struct AnyKind {
     template <class K> AnyKind(K&) {}
 };
 
+// `density_file df3 "name"`: the file is found on the scene's search path and read now.
+void read_density_file(ItemCursor& cur, const Item& kw, pattern::DensityFile& d) {
+    if (!cur.accept_keyword("df3")) cur.fail_expected("'df3'", kw.keyword);
+    const std::string name = cur.expect_string("df3");
+    d.file = FileResolver(cur.ctx().search_path).find(name, FileResolver::Kind::DensityFile);
+    if (d.file.empty()) cur.fail(cur.here(), "cannot find density file '" + name + "'");
+    d.grid = read_df3(d.file, cur.here());
+}
+
 // Numbers, vectors and strings after the keyword of a kind lumen does not model yet
-// (`julia <0.3, 0.5> 30`, `density_file df3 "f"`).
+// (`spiral1 3`, `cells`).
 void read_raw_arguments(ItemCursor& cur, pattern::Arguments& args) {
     cur.accept_keyword("df3");
     while (cur.next_is_vector_like() || cur.next_is<std::string>()) {
@@ -37,10 +48,70 @@ void read_raw_arguments(ItemCursor& cur, pattern::Arguments& args) {
     }
 }
 
+// `julia <cr, ci>`: a 2-vector (a float stands for both components).
+glm::dvec2 read_uv(ItemCursor& cur, const std::string& w) {
+    const std::vector<double> v = cur.expect_vecn(w);
+    if (v.size() == 1) return {v[0], v[0]};
+    if (v.size() != 2) cur.fail(cur.here(), "'" + w + "' takes a 2-component vector");
+    return {v[0], v[1]};
+}
+
+// `magnet 1|2 mandel N` or `magnet 1|2 julia <c>, N`.
+void read_magnet(ItemCursor& cur, const Item& kw, pattern::Magnet& m) {
+    m.type = cur.expect_int(kw.keyword);
+    if (m.type != 1 && m.type != 2) cur.fail(kw.loc, "magnet type must be 1 or 2");
+    if (cur.accept_keyword("julia")) {
+        m.julia = true;
+        m.c = read_uv(cur, "julia");
+    } else if (!cur.accept_keyword("mandel")) {
+        cur.fail_expected("'mandel' or 'julia'", kw.keyword);
+    }
+    m.iterations = cur.expect_int(kw.keyword);
+}
+
+// `exponent n`: POV-Ray truncates it and uses 2 for any outside 2..33.
+bool read_exponent(ItemCursor& cur, const std::string& w, scene::PatternKind& kind) {
+    int* e = nullptr;
+    if (auto* m = std::get_if<pattern::Mandel>(&kind)) e = &m->exponent;
+    else if (auto* j = std::get_if<pattern::Julia>(&kind)) e = &j->exponent;
+    else return false;
+    *e = cur.expect_int(w);
+    if (*e < 2 || *e > 33) {
+        cur.warn(cur.here(), "fractal exponent must be 2 to 33: using 2");
+        *e = 2;
+    }
+    return true;
+}
+
+// A slope or altitude vector: its direction and length.
+void read_slope_vector(ItemCursor& cur, const std::string& w, glm::dvec3& dir, double& len) {
+    const glm::dvec3 v = cur.expect_vector(w);
+    len = glm::length(v);
+    if (len == 0) cur.fail(cur.here(), "'" + w + "' vector is zero");
+    dir = v / len;
+}
+
+// An optional `, lo, hi` after a slope or altitude vector.
+glm::dvec2 read_range(ItemCursor& cur, const std::string& w) {
+    if (!cur.next_is_float()) return {0, 0};
+    const double lo = cur.expect_float(w);
+    return {lo, cur.expect_float(w)};
+}
+
+// `tiling N`: POV-Ray takes any N outside 1..27 as 1; lumen models 1, 2, 3, 5 and 10.
+void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern& pattern, pattern::Tiling& t) {
+    t.type = cur.expect_int(kw.keyword);
+    if (t.type < 1 || t.type > 27) t.type = 1;
+    if (t.type != 1 && t.type != 2 && t.type != 3 && t.type != 5 && t.type != 10)
+        mark_unsupported(pattern, "pattern 'tiling " + std::to_string(t.type) + "'", kw.loc);
+}
+
 // A kind-specific modifier's value, by the type of the parameter it sets.
 template <class T> T read_value(ItemCursor& cur, const std::string& w) {
     if constexpr (std::is_same_v<T, double>) {
         return cur.expect_float(w);
+    } else if constexpr (std::is_same_v<T, int>) {
+        return cur.expect_int(w);
     } else if constexpr (std::is_same_v<T, glm::dvec3>) {
         return cur.expect_vector(w);
     } else if constexpr (std::is_same_v<T, glm::dvec2>) {  // fractal `interior type, factor`
@@ -94,9 +165,7 @@ const KindModifier kKindModifiers[] = {
     {"form", "a crackle or pavement pattern",
      read_in<In<pattern::Crackle, &pattern::Crackle::form>,
              In<pattern::Pavement, &pattern::Pavement::form>>},
-    {"exponent", "a mandel or julia pattern",
-     read_in<In<pattern::Mandel, &pattern::Mandel::exponent>,
-             In<pattern::Julia, &pattern::Julia::exponent>>},
+    {"exponent", "a mandel or julia pattern", read_exponent},
     {"interior", "a mandel, julia, magnet or pavement pattern",
      read_in<In<pattern::Mandel, &pattern::Mandel::interior>,
              In<pattern::Julia, &pattern::Julia::interior>,
@@ -127,6 +196,23 @@ const std::vector<std::string>& pattern_kind_keywords() {
     return k;
 }
 
+void read_slope_block(ItemCursor& cur, pattern::Slope& s) {
+    const std::string w = "slope";
+    if (cur.accept_keyword("point_at")) {
+        s.point_at = true;
+        s.direction = cur.expect_vector("point_at");
+        s.length = glm::length(s.direction);
+    } else {
+        read_slope_vector(cur, w, s.direction, s.length);
+    }
+    s.range = read_range(cur, w);
+    if (cur.accept_keyword("altitude")) {
+        read_slope_vector(cur, "altitude", s.altitude, s.altitude_length);
+        s.altitude_range = read_range(cur, "altitude");
+    }
+    if (!cur.at_end()) cur.fail_unexpected(cur.peek(), {"point_at", "altitude"});
+}
+
 void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pattern) {
     std::visit(Overloaded{[&](pattern::Gradient& g) {
                               const glm::dvec3 v = cur.expect_vector(kw.keyword);
@@ -134,6 +220,19 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
                               g.direction = glm::normalize(v);
                           },
                           [&](pattern::Spiral& s) { s.arms = cur.expect_int(kw.keyword); },
+                          [&](pattern::Mandel& m) { m.iterations = cur.expect_int(kw.keyword); },
+                          [&](pattern::Julia& j) {
+                              j.c = read_uv(cur, kw.keyword);
+                              j.iterations = cur.expect_int(kw.keyword);
+                          },
+                          [&](pattern::Magnet& m) { read_magnet(cur, kw, m); },
+                          [&](pattern::Tiling& t) { read_tiling(cur, kw, pattern, t); },
+                          [&](pattern::DensityFile& d) { read_density_file(cur, kw, d); },
+                          [&](pattern::Slope& s) {
+                              read_slope_vector(cur, kw.keyword, s.direction, s.length);
+                          },
+                          // POV-Ray skips frequency and phase for quilted unless given.
+                          [&](pattern::Quilted&) { pattern.frequency = 0; },
                           [&](pattern::Arguments& a) { read_raw_arguments(cur, a); },
                           [](AnyKind) {}},  // the other kinds take no arguments
                pattern.kind);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "interp/builders.hpp"
@@ -77,6 +78,20 @@ inline void expect_vec(const glm::dvec3& a, const glm::dvec3& b, double eps = 1e
     EXPECT_NEAR(a.x, b.x, eps);
     EXPECT_NEAR(a.y, b.y, eps);
     EXPECT_NEAR(a.z, b.z, eps);
+}
+
+// A pattern keyword with the arguments it needs (a pigment_map or normal_map for average is
+// the caller's).
+inline std::string pattern_with_arguments(std::string_view keyword) {
+    std::string body(keyword);
+    if (keyword == "gradient" || keyword == "slope") body += " y";
+    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
+    if (keyword == "mandel" || keyword == "tiling") body += " 10";
+    if (keyword == "julia") body += " <0.3, 0.2>, 10";
+    if (keyword == "magnet") body += " 1 mandel 10";
+    if (keyword == "density_file")
+        body += std::string(" df3 \"") + LUMEN_SOURCE_DIR + "/tests/patterns/grid16.df3\"";
+    return body;
 }
 
 }  // namespace lumen::interp::testing

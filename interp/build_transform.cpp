@@ -123,13 +123,17 @@ Transform build_transform_block(ItemCursor& cur) {
     return invert ? inverted(total) : total;
 }
 
+// Not the pigment_map entries: they are evaluated at the pigment's pattern point, so they
+// already move with it (render/pigment.cpp).
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     if (!p) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
-    copy->pattern.steps.add_transform(t);  // the map's entries follow (render/pattern.hpp)
+    copy->pattern.steps.add_transform(t);
     return copy;
 }
 
+// The normal_map entries are evaluated in this normal's pattern space (scene::Normal): they
+// move with it without a copy of the transform.
 scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
     if (!n) return n;
     auto copy = std::make_shared<scene::Normal>(*n);
@@ -137,6 +141,8 @@ scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
     return copy;
 }
 
+// Nor the texture_map entries: they are evaluated at the texture's pattern point
+// (render/texture_layers.cpp, render/tracer.cpp).
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const Transform& t) {
     if (!tex) return tex;
     auto copy = std::make_shared<scene::Texture>(*tex);

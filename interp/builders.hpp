@@ -7,6 +7,7 @@
 
 #include "interp/value.hpp"
 #include "base/diagnostics.hpp"
+#include "base/file_resolver.hpp"
 
 namespace lumen::interp {
 
@@ -22,6 +23,7 @@ struct BuildContext {
         std::make_shared<scene::PatternGlobals>();
     bool noise_generator_given = false;  // global_settings { noise_generator } was read
     std::function<void(const Diagnostic&)> warn;  // may be empty
+    SearchPath search_path;  // where the files a scene names are looked for (density files)
 };
 
 // True for block keywords that the builders turn into values. Reserved words that are not

@@ -117,9 +117,24 @@ Json finish(const scene::Finish& f) {
 }
 
 Json normal(const scene::Normal& n) {
+    const scene::Normal d;
     Json o;
     put_nonempty(o, "pattern", pattern(n.pattern));
-    put_if(o, "amount", n.amount, scene::Normal{}.amount);
+    put_if(o, "amount", n.amount, d.amount);
+    put_if(o, "accuracy", n.accuracy, d.accuracy);
+    put_if(o, "no_bump_scale", n.no_bump_scale, d.no_bump_scale);
+    Json nm = Json::array();
+    for (const auto& e : n.normal_map) {
+        Json entry;
+        entry.put("value", Json::num(e.value));
+        if (e.item) entry.put("normal", normal(*e.item));
+        nm.push(entry);
+    }
+    put_nonempty(o, "normal_map", nm);
+    Json sm = Json::array();
+    for (const auto& e : n.slope_map)
+        sm.push(Json::array().push(Json::num(e.value)).push(Json::num(e.item.x)).push(Json::num(e.item.y)));
+    put_nonempty(o, "slope_map", sm);
     return o;
 }
 

@@ -25,6 +25,8 @@ void Evaluator::run_main(const ast::Node& body, const SourceFile& file,
                          const std::function<void(const Item&)>& emit) {
     size_t slash = file.name.rfind('/');
     scene_dir_ = slash == std::string::npos ? "." : file.name.substr(0, std::max<size_t>(slash, 1));
+    ctx.search_path = {scene_dir_, options_.library_paths,
+                       options_.default_include_path ? options_.system_include_dir : std::string()};
     ScopedSet sealed(breakable_, 0);
     std::vector<Item> items;
     for (const ast::NodePtr& n : body.children) {

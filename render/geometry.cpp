@@ -132,6 +132,7 @@ struct Geometry::Impl {
     Aabb seen_bounded[kQueries];      // around the bounded roots each query sees
     Bvh bvh;
     size_t primitives = 0;
+    std::vector<PlacedObject> placed;  // the roots in scene order
     bool listable[kQueries] = {};  // every root seen is a direct kind: visit_shadow_hits works
     bool mostly_passes_light[kQueries] = {};
     // Boxes of the clear roots that shadow rays see, grown by twice the shadow tolerance, in
@@ -206,8 +207,14 @@ struct Geometry::Impl {
 Geometry::Geometry(const std::vector<scene::ObjectPtr>& objects) : impl_(std::make_unique<Impl>()) {
     NodeStore& store = impl_->store;
     std::vector<uint32_t> roots;
+    std::vector<scene::Transform> to_world;
     for (const auto& object : objects)
-        if (object) compile_top_level(store, *object, roots);
+        if (object) compile_top_level(store, *object, roots, to_world);
+    for (size_t i = 0; i < roots.size(); ++i) {
+        const Node& n = store.nodes[roots[i]];
+        impl_->placed.push_back({n.object, to_world[i], n.texture, n.kind != NodeKind::Shape,
+                                 n.no_radiosity, n.clip_count > 0});
+    }
     std::vector<Aabb> boxes;
     std::vector<uint32_t> finite;
     for (uint32_t r : roots) {
@@ -233,6 +240,8 @@ Geometry::Geometry(const std::vector<scene::ObjectPtr>& objects) : impl_(std::ma
 Geometry::~Geometry() = default;
 
 size_t Geometry::primitive_count() const { return impl_->primitives; }
+
+const std::vector<PlacedObject>& Geometry::placed_objects() const { return impl_->placed; }
 
 bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Query query) const {
     const NodeStore& store = impl_->store;

@@ -7,6 +7,18 @@
 
 namespace lumen::render {
 
+// A top-level object as the geometry compiled it (unions flattened into their members), in
+// scene order: the source object, its object -> world transform and what it inherited from
+// the unions around it. The radiosity mesher meshes these, so it sees what the tracer sees.
+struct PlacedObject {
+    const scene::Object* object = nullptr;
+    scene::Transform to_world;
+    const scene::LayeredTexture* texture = nullptr;  // after inheritance; null = default
+    bool csg = false;           // a merge, intersection or difference (meshed as a whole or not)
+    bool no_radiosity = false;  // own or inherited
+    bool clipped = false;       // own or inherited clipped_by
+};
+
 class Geometry final : public Intersector {
 public:
     // Builds the acceleration structure. Throws LumenError (with the object's location) for a
@@ -44,6 +56,7 @@ public:
     static bool inside(const scene::Object& object, const glm::dvec3& p);
 
     size_t primitive_count() const;
+    const std::vector<PlacedObject>& placed_objects() const;
 
 private:
     struct Impl;

@@ -69,9 +69,11 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
                         bool accelerate = true);
 
 // Top-level form: unions (not merges) are flattened into their children, with inverse, clips,
-// bounds and inherited attributes pushed down, so the BVH sees every primitive. Appends roots.
+// bounds and inherited attributes pushed down, so the BVH sees every primitive. Appends roots
+// and, to `to_world`, each root's object -> world transform (what the radiosity mesher places
+// the source object with).
 void compile_top_level(NodeStore& store, const scene::Object& object,
-                       std::vector<uint32_t>& roots);
+                       std::vector<uint32_t>& roots, std::vector<scene::Transform>& to_world);
 
 // The nearest accepted hit of a node: which leaf, and the shape's own report.
 struct NodeHit {

@@ -154,7 +154,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
 }
 
 void compile_top_level(NodeStore& store, const scene::Object& object,
-                       std::vector<uint32_t>& roots) {
+                       std::vector<uint32_t>& roots, std::vector<scene::Transform>& to_world) {
     // Explicit stack: unions nested thousands deep (loops building unions) stay flat. The
     // children of one union share its context, stored once.
     std::vector<NodeContext> contexts(1);
@@ -166,6 +166,7 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         auto* csg = std::get_if<scene::Csg>(&o.shape);
         if (!csg || csg->op != scene::CsgOp::Union) {
             roots.push_back(compile_object(store, o, contexts[at]));
+            to_world.push_back(o.transform.then(contexts[at].to_world));
             continue;
         }
         NodeContext inner;

@@ -8,7 +8,13 @@
 
 #include "noise/waveforms.hpp"
 #include "render/pattern_kinds.hpp"
+#include "render/patterns/fractals.hpp"
 #include "render/patterns/noise_kinds.hpp"
+#include "render/patterns/pattern_sources.hpp"
+#include "render/patterns/periodic.hpp"
+#include "render/patterns/surface_patterns.hpp"
+#include "render/patterns/tilings.hpp"
+#include "render/patterns/warps.hpp"
 
 namespace lumen::render {
 namespace {
@@ -31,9 +37,7 @@ bool displaced_by_classic_turbulence(PatternType type) {
 }
 
 // The steps act on the pattern first to last, so a world point goes through them last to
-// first; POV then clamps each coordinate to +-1e17. The warps that are not turbulence are the
-// warps issue's: the interp reports a pattern that has them unsupported, so they never reach
-// a render and leave the point as is.
+// first; POV then clamps each coordinate to +-1e17.
 glm::dvec3 to_pattern_space(const scene::Pattern& pattern, glm::dvec3 p) {
     const scene::PatternSteps& steps = pattern.steps;
     for (auto it = steps.steps.rbegin(); it != steps.steps.rend(); ++it)
@@ -45,17 +49,22 @@ glm::dvec3 to_pattern_space(const scene::Pattern& pattern, glm::dvec3 p) {
                                       p = turbulent(t, p);
                               },
                               [&](const scene::warp::Turbulence& t) { p = turbulent(t, p); },
+                              [&](const scene::warp::Repeat& w) { p = warp_point(w, p); },
+                              [&](const scene::warp::BlackHole& w) { p = warp_point(w, p); },
+                              [&](const scene::warp::Mapping& w) { p = warp_point(w, p); },
                               [](const auto&) {}},
                    *it);
     return glm::clamp(p, glm::dvec3(-1e17), glm::dvec3(1e17));
 }
 
-double raw_value(const scene::Pattern& pattern, const glm::dvec3& p) {
+double raw_value(const scene::Pattern& pattern, const glm::dvec3& p, const SurfacePoint* surface) {
     return std::visit(
         [&](const auto& k) -> double {
             using Kind = std::decay_t<decltype(k)>;
             if constexpr (!scene::PatternTraits<Kind>::info.rendered)
                 return 0.0;  // reported unsupported by the interp: never rendered
+            else if constexpr (requires { evaluate(k, p, surface); })
+                return evaluate(k, p, surface);  // slope, aoi
             else if constexpr (requires { evaluate(k, p, pattern); })
                 return evaluate(k, p, pattern);  // noise kinds need the pattern's settings
             else
@@ -98,12 +107,12 @@ const scene::ColourMap& hexagon_map() {
 }
 const scene::ColourMap& square_map() {
     static const scene::ColourMap m{
-        {0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)}, {3, rgb(1, 1, 0)}};
+        {0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)}, {3, rgb(1, 1, 0)}};
     return m;
 }
 const scene::ColourMap& triangular_map() {
-    static const scene::ColourMap m{{0, rgb(0, 0, 1)}, {1, rgb(0, 1, 0)}, {2, rgb(1, 0, 0)},
-                                    {3, rgb(1, 0, 1)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 1, 0)}};
+    static const scene::ColourMap m{{0, rgb(1, 0, 0)}, {1, rgb(0, 1, 0)}, {2, rgb(0, 0, 1)},
+                                    {3, rgb(1, 1, 0)}, {4, rgb(0, 1, 1)}, {5, rgb(1, 0, 1)}};
     return m;
 }
 // POV-Ray's built-in maps of bozo, wood, marble and agate.
@@ -136,20 +145,25 @@ const scene::ColourMap& radial_map() {
 
 }  // namespace
 
+double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point,
+                     const SurfacePoint* surface) {
+    return pattern_value_at(pattern, to_pattern_space(pattern, world_point), surface);
+}
+
 glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point) {
     return to_pattern_space(pattern, world_point);
 }
 
-double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point) {
-    return pattern_value_at(pattern, to_pattern_space(pattern, world_point));
-}
-
-double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point) {
-    double v = raw_value(pattern, pattern_point);
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point,
+                        const SurfacePoint* surface) {
+    double v = raw_value(pattern, pattern_point, surface);
     if (is_discrete(pattern.type())) return v;
-    // POV's period is 1.00001, not 1: far from the origin the bands drift.
-    if (pattern.frequency != 0) v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
-    if (v < 0) v -= std::floor(v);
+    // POV's period is 1.00001, not 1: far from the origin the bands drift. Frequency 0 (quilted
+    // without one given, ...) skips the step.
+    if (pattern.frequency != 0) {
+        v = std::fmod(v * pattern.frequency + pattern.phase, 1.00001);
+        if (v < 0) v -= std::floor(v);
+    }
     return apply_wave(pattern, v);
 }
 

@@ -9,6 +9,13 @@ namespace lumen::render {
 using scene::blend_weights;
 using scene::BlendWeights;
 
+// Where on a surface a pattern is evaluated, for the patterns that depend on more than the
+// point (slope, aoi): the world hit point, the shading normal turned to face the ray, and the
+// ray's direction. Null where there is no surface (the sky, shadow filters): they give 0.
+struct SurfacePoint {
+    glm::dvec3 point, normal, direction;
+};
+
 // Discrete (block) patterns give an index, skip frequency/phase/waves and pick map entries by
 // index: checker 0..1, brick 0..1 (mortar, brick), hexagon 0..2, square 0..3, triangular 0..5.
 inline bool is_discrete(scene::PatternType type) { return scene::discrete_entries(type) > 0; }
@@ -16,13 +23,16 @@ inline bool is_discrete(scene::PatternType type) { return scene::discrete_entrie
 // The pattern's value at world point p: maps p through the pattern's transforms and warps into
 // pattern space, computes the kind's raw value and applies frequency/phase and the wave type
 // (continuous patterns), so the result indexes a blend map directly.
-double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point);
-// The two halves of pattern_value: the point in the pattern's own space (through its
-// transforms and warps), and the value at such a point. A map's entries (pigment_map,
-// texture_map, normal_map and the list forms) are evaluated at their parent's pattern point,
-// as POV does: the parent's transforms and turbulence carry over to them.
+double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point,
+                     const SurfacePoint* surface = nullptr);
+// The two halves of pattern_value: the world point mapped into pattern space, and the value
+// at a point already there. A pigment's and a texture's map entries take their parent's
+// pattern point as their world point (POV-Ray: they see the parent's transforms and warps);
+// a normal samples its pattern's slope around one warped point, and POV does not warp the
+// samples again.
 glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point);
-double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point);
+double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point,
+                        const SurfacePoint* surface = nullptr);
 
 // The colour map a pattern uses when the scene gives none.
 const scene::ColourMap& default_colour_map(scene::PatternType type);

@@ -41,13 +41,17 @@ double evaluate(const pattern::Planar&, const glm::dvec3& p) {
     return 1.0 - std::min(1.0, std::fabs(p.y));
 }
 
-// 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y).
+// 0 at +x, 0.25 at -z, 0.5 at -x, 0.75 at +z (winding around +y), as POV computes it: in
+// [0.25, 1.25), so the frequency's wrap at 1.00001 falls where POV's does, and 0.25 within
+// 0.001 of the axis.
 double evaluate(const pattern::Radial&, const glm::dvec3& p) {
-    return std::atan2(-p.z, p.x) / (2 * std::numbers::pi);
+    if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+    return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / (2 * std::numbers::pi);
 }
 
+// Wrapped here, before the frequency's wrap at 1.00001 (beyond a radius of 1 the two differ).
 double evaluate(const pattern::Onion&, const glm::dvec3& p) {
-    return std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    return std::fmod(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), 1.0);
 }
 
 double evaluate(const pattern::Spherical&, const glm::dvec3& p) {
@@ -97,23 +101,24 @@ double evaluate(const pattern::Hexagon&, const glm::dvec3& p) {
     return double(((bi - bj) % 3 + 3) % 3);
 }
 
-// Unit squares in the xz plane; the four colours tile a 2x2 block.
+// Unit squares in the xz plane; the four values tile a 2x2 block (even x: 0 at even z, 1 at
+// odd z; odd x: 3, then 2), as povray's list form shows them.
 double evaluate(const pattern::Square&, const glm::dvec3& p) {
     const long a = long(std::floor(p.x)) & 1, b = long(std::floor(p.z)) & 1;
-    return double(2 * (1 - b) + (a ^ b));
+    return double(a ? 3 - b : b);
 }
 
 // Equilateral triangles of side 1 in the xz plane, in bands of height √3/2 whose upward
 // triangles alternate between half-integer and integer centres; six colours meet at every
-// vertex. Layout matched pixel by pixel against povray 3.7.
+// vertex. Layout and values (povray's list form) matched pixel by pixel against povray 3.7.
 double evaluate(const pattern::Triangular&, const glm::dvec3& p) {
     const double h = std::sqrt(3.0) / 2;
     const double band = std::floor(p.z / h);
     const double v = p.z / h - band;  // 0 at the band's bottom edge
     const double half_width = (1 - v) / 2;  // of the upward triangle at this height
     const double fl = std::floor(p.x), nearest = std::floor(p.x + 0.5);
-    static constexpr int even_up[3] = {2, 4, 0}, even_down[3] = {1, 5, 3};
-    static constexpr int odd_up[3] = {4, 0, 2}, odd_down[3] = {3, 1, 5};
+    static constexpr int even_up[3] = {0, 4, 2}, even_down[3] = {1, 3, 5};
+    static constexpr int odd_up[3] = {4, 2, 0}, odd_down[3] = {5, 1, 3};
     if (std::fmod(std::fabs(band), 2.0) == 0) {
         if (std::fabs(p.x - (fl + 0.5)) < half_width) return even_up[mod3(fl)];
         return even_down[mod3(nearest)];

@@ -13,10 +13,11 @@ namespace {
 TEST(PatternTable, DiscreteKindsHaveADefaultMapEntryPerIndex) {
     for (const scene::PatternInfo& row : scene::kPatternTable) {
         EXPECT_EQ(is_discrete(row.type), row.entries > 0) << row.keyword;
-        if (row.entries > 0)
+        if (row.entries > 0) {
             EXPECT_EQ(int(default_colour_map(row.type).size()), row.entries) << row.keyword;
-        else
+        } else {  // the noise kinds' and mandel's maps end below 1, as POV-Ray's do
             EXPECT_FALSE(default_colour_map(row.type).empty()) << row.keyword;
+        }
     }
 }
 
@@ -27,8 +28,13 @@ TEST(PatternTable, DispatchReachesEachKindsEvaluator) {
     p.kind = scene::pattern::Brick{};
     EXPECT_DOUBLE_EQ(pattern_value(p, {1, 1, 1}), 1.0);   // inside a brick
     EXPECT_DOUBLE_EQ(pattern_value(p, {1, 2.75, 1}), 0.0);  // in the mortar
+    // povray's list form `square A, B, C, D`: A and B alternate along z at even x, D and C at
+    // odd x (the values matter to normals, which difference them).
     p.kind = scene::make_pattern_kind(scene::PatternType::Square);
-    EXPECT_DOUBLE_EQ(pattern_value(p, {0.5, 0, 0.5}), 2.0);
+    EXPECT_DOUBLE_EQ(pattern_value(p, {0.5, 0, 0.5}), 0.0);
+    EXPECT_DOUBLE_EQ(pattern_value(p, {0.5, 0, 1.5}), 1.0);
+    EXPECT_DOUBLE_EQ(pattern_value(p, {1.5, 0, 0.5}), 3.0);
+    EXPECT_DOUBLE_EQ(pattern_value(p, {1.5, 0, 1.5}), 2.0);
 }
 
 scene::Transform scaled(double s) {

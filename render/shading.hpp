@@ -20,6 +20,8 @@ struct SurfaceSample {
     glm::dvec3 point{0};
     glm::dvec3 view{0, 0, 1};    // unit direction of the incoming ray
     glm::dvec3 normal{0, 1, 0};  // shading normal, facing the incoming ray
+    glm::dvec3 raw_normal{0, 1, 0};  // the surface's own normal, facing the incoming ray
+    const scene::Object* object = nullptr;  // the primitive shaded (its own shadow, see .cpp)
     glm::dvec3 colour{0};        // pigment rgb
     double opacity = 1;          // 1 − f − t (or the legacy formula)
     const scene::Finish* finish = nullptr;

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/normal.hpp"
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -16,6 +17,17 @@ bool is_black(const glm::dvec3& c) { return c.x < kBlack && c.y < kBlack && c.z 
 
 bool fades(const scene::Interior& in, bool shadow_ray) {
     return !(std::fabs(in.fade_distance) <= 1e-10) && !(shadow_ray && in.fade_power <= 0);
+}
+
+// The normal fake caustics focus the light with: the surface's own, facing the shadow ray,
+// perturbed by the normal of the top texture layer (POV's caustics come from a surface's bumps).
+glm::dvec3 caustic_normal(const Hit& hit, const glm::dvec3& dir) {
+    glm::dvec3 n = hit.normal;
+    if (glm::dot(n, dir) > 0) n = -n;
+    const scene::LayeredTexture* layers = facing_texture(hit, dir);
+    if (!layers || layers->empty() || !layers->back()) return n;
+    const ResolvedLayer top = resolve_layer(*layers->back(), hit.point);
+    return top.normal ? framed_normal(*top.normal, n, top.point, top.frame) : n;
 }
 
 }  // namespace
@@ -68,7 +80,8 @@ public:
         }
         // Fake caustics brighten light passing a transparent surface head-on.
         if (hit.interior && hit.interior->caustics != 0)
-            filter_ *= 1 + std::pow(std::fabs(glm::dot(hit.normal, dir_)), 45 * hit.interior->caustics);
+            filter_ *= 1 + std::pow(std::fabs(glm::dot(caustic_normal(hit, dir_), dir_)),
+                                    45 * hit.interior->caustics);
         const int where = inside_.find(hit.interior_id);
         if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
         if (inside_.in_solid()) solid_length_ += depth;

@@ -16,40 +16,82 @@ const scene::Texture* top_layer(const scene::LayeredTexture& layers) {
     return layers.empty() ? nullptr : layers.back().get();
 }
 
-ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p) {
-    const scene::Texture* t = top_layer(layers);
-    if (!t) return {scene::Colour{}, &default_finish(), nullptr};
-    return resolve_layer(*t, p);
+ResolvedLayer plain_layer(const scene::Colour& c, const glm::dvec3& p) {
+    return {c, &default_finish(), nullptr, p, NormalFrame::none()};
 }
 
-}  // namespace
+ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p,
+                            const SurfacePoint* surface) {
+    const scene::Texture* t = top_layer(layers);
+    if (!t) return plain_layer(scene::Colour{}, p);
+    return resolve_layer(*t, p, surface);
+}
 
-ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) {
-    if (texture.pattern.is_plain() || texture.texture_map.empty()) {
-        return {evaluate_pigment(texture.pigment.get(), p),
-                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
+// `average texture_map`: the entries' colours weighted by their values, with the finish and
+// normal of the heaviest entry (as a blend takes the nearer entry's).
+ResolvedLayer resolve_average(const scene::TextureMap& map, const glm::dvec3& p,
+                              const SurfacePoint* surface) {
+    const double total = scene::average_total(map);
+    if (total == 0) return plain_layer(scene::Colour{}, p);
+    ResolvedLayer out = plain_layer(scene::Colour{}, p);
+    double heaviest = -1;
+    for (const auto& e : map) {
+        const ResolvedLayer l = resolve_entry(e.item, p, surface);
+        const double w = e.value / total;
+        const scene::Colour& c = l.colour;
+        out.colour = {out.colour.r + w * c.r, out.colour.g + w * c.g, out.colour.b + w * c.b,
+                      out.colour.f + w * c.f, out.colour.t + w * c.t};
+        if (w > heaviest) {
+            heaviest = w;
+            out.finish = l.finish, out.normal = l.normal;
+            out.point = l.point, out.frame = l.frame;
+        }
     }
-    // The entries are evaluated at this pattern's point.
-    const glm::dvec3 tp = pattern_point(texture.pattern, p);
-    const BlendWeights b = blend_weights(texture.texture_map, pattern_value_at(texture.pattern, tp));
-    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, tp);
+    return out;
+}
+
+// The entries around the value at tp, blended: the colours mixed, the finish and normal of
+// the heavier entry.
+ResolvedLayer resolve_blend(const scene::Texture& texture, const glm::dvec3& tp,
+                            const SurfacePoint* surface) {
+    const double v = pattern_value_at(texture.pattern, tp, surface);
+    const BlendWeights b = blend_weights(texture.texture_map, v);
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, tp, surface);
     if (b.upper_weight == 0) return lo;
-    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, tp);
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, tp, surface);
     ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
     out.colour = mix(lo.colour, hi.colour, b.upper_weight);
     return out;
 }
 
+}  // namespace
+
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p,
+                            const SurfacePoint* surface) {
+    if (texture.pattern.is_plain() || texture.texture_map.empty()) {
+        return {evaluate_pigment(texture.pigment.get(), p, surface),
+                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get(), p,
+                NormalFrame::none()};
+    }
+    // The entries are evaluated at this pattern's point, their normals in its frame.
+    const glm::dvec3 tp = pattern_point(texture.pattern, p);
+    ResolvedLayer out = std::holds_alternative<scene::pattern::Average>(texture.pattern.kind)
+                            ? resolve_average(texture.texture_map, tp, surface)
+                            : resolve_blend(texture, tp, surface);
+    if (out.normal) out.frame = NormalFrame::of(texture.pattern).then(out.frame);
+    return out;
+}
+
 void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
-                    ResolvedLayers& out) {
+                    ResolvedLayers& out, const SurfacePoint* surface) {
     out.clear();
     if (!layers || layers->empty()) {
-        out.add({scene::Colour{}, &default_finish(), nullptr});
+        out.add(plain_layer(scene::Colour{}, p));
         return;
     }
     for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it)
-        out.add(*it ? resolve_layer(**it, p)
-                    : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr});
+        out.add(*it ? resolve_layer(**it, p, surface)
+                    : plain_layer(scene::Colour{}, p));
 }
 
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p) {

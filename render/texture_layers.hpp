@@ -6,6 +6,8 @@
 #include <glm/vec3.hpp>
 
 #include "render/hit.hpp"
+#include "render/normal_frame.hpp"
+#include "render/pattern.hpp"
 #include "scene/texture.hpp"
 
 namespace lumen::render {
@@ -16,6 +18,10 @@ struct ResolvedLayer {
     scene::Colour colour;
     const scene::Finish* finish;  // never null after resolve
     const scene::Normal* normal;  // null: no perturbation
+    // Where the normal is evaluated, and through which frame: the point given and no frame, or
+    // within a texture_map's entry the map's pattern point and its frame.
+    glm::dvec3 point;
+    NormalFrame frame;
 };
 
 const scene::Finish& default_finish();
@@ -33,7 +39,9 @@ inline const scene::LayeredTexture* facing_texture(const Hit& hit, const glm::dv
 // Plain texture -> its layer. A patterned texture used as one layer of several is resolved by
 // blending its entries' pigments and taking the finish/normal of the heavier entry (POV blends
 // whole shading results only for a single patterned texture; the tracer does that itself).
-ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p);
+// `surface` (null: none) reaches the slope and aoi patterns.
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p,
+                            const SurfacePoint* surface = nullptr);
 
 // Top-first list of the resolved layers of `layers` (bottom-first in the scene graph); a null
 // or empty texture is the default one (black, default finish).
@@ -54,7 +62,8 @@ private:
     int count_ = 0;
     alignas(ResolvedLayer) unsigned char storage_[kMax * sizeof(ResolvedLayer)];
 };
-void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out);
+void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, ResolvedLayers& out,
+                    const SurfacePoint* surface = nullptr);
 
 // Product over layers of (rgb·filter + transmit): the light a surface lets through.
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p);

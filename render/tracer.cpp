@@ -9,6 +9,7 @@
 #include "base/diagnostics.hpp"
 #include "render/fog.hpp"
 #include "render/frame.hpp"
+#include "render/normal.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
@@ -54,6 +55,13 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
 }
 
 // Single patterned texture whose entries are shaded separately and blended.
+// The hit as the surface patterns (slope, aoi) see it: the normal turned to face the ray.
+SurfacePoint surface_point(const Ray& ray, const Hit& hit) {
+    glm::dvec3 n = hit.normal;
+    if (glm::dot(n, ray.dir) > 0) n = -n;
+    return {hit.point, n, ray.dir};
+}
+
 bool is_texture_map(const scene::LayeredTexture* t) {
     return t && t->size() == 1 && t->front() &&
            !t->front()->pattern.is_plain() &&
@@ -135,7 +143,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     if (find_hit(ray, ctx.kind, hit)) {
         *depth = hit.t;
         hit.texture = facing_texture(hit, ray.dir);
-        c = shade(ray, hit, hit.point, here, state);
+        c = shade(ray, hit, {hit.point, NormalFrame::none()}, here, state);
     } else {
         c = sky(ray.dir);
     }
@@ -143,14 +151,15 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     return c;
 }
 
-RayColour Tracer::shade(const Ray& ray, const Hit& hit, const glm::dvec3& texture_point,
-                        const Context& ctx, ThreadState& state) const {
+RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, const Context& ctx,
+                        ThreadState& state) const {
     const scene::LayeredTexture* texture = hit.texture;
-    if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, texture_point, ctx, state);
-    // texture_map: shade both neighbouring entries, at the map's pattern point, and blend.
+    if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, at, ctx, state);
+    // texture_map: shade both neighbouring entries, at the map's pattern point and in its
+    // frame, and blend.
     const scene::Texture& t = *texture->front();
-    const glm::dvec3 tp = pattern_point(t.pattern, texture_point);
-    const BlendWeights b = blend_weights(t.texture_map, pattern_value_at(t.pattern, tp));
+    const TexturePoint tp{pattern_point(t.pattern, at.point),
+                          at.frame.then(NormalFrame::of(t.pattern))};
     auto entry = [&](int i, double w) {
         Context sub = ctx;
         sub.weight *= w;
@@ -158,6 +167,23 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const glm::dvec3& textur
         h.texture = &t.texture_map[i].item;
         return shade(ray, h, tp, sub, state);
     };
+    if (std::holds_alternative<scene::pattern::Average>(t.pattern.kind)) {
+        // average: every entry shaded and weighted by its value (a total of 0 gives black).
+        RayColour out;
+        const double total = scene::average_total(t.texture_map);
+        if (total == 0) return out;
+        for (int i = 0; i < int(t.texture_map.size()); ++i) {
+            const double w = t.texture_map[i].value / total;
+            if (std::fabs(w) * ctx.weight < adc_bailout_) continue;
+            const RayColour c = entry(i, std::fabs(w));
+            out.rgb += w * c.rgb;
+            out.transmit += w * c.transmit;
+        }
+        return out;
+    }
+    const SurfacePoint surface = surface_point(ray, hit);
+    const BlendWeights b =
+        blend_weights(t.texture_map, pattern_value_at(t.pattern, tp.point, &surface));
     if (b.upper_weight == 0) return entry(b.lower, 1.0);
     RayColour out;
     const double ws[2] = {1 - b.upper_weight, b.upper_weight};
@@ -173,14 +199,15 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const glm::dvec3& textur
 }
 
 RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
-                               const glm::dvec3& texture_point, const Context& ctx,
+                               const TexturePoint& at, const Context& ctx,
                                ThreadState& state) const {
     const glm::dvec3 d = ray.dir;
     glm::dvec3 raw_n = hit.normal;
     if (glm::dot(raw_n, d) > 0) raw_n = -raw_n;  // every surface is two-sided
 
     ResolvedLayers layers;
-    resolve_layers(texture, texture_point, layers);
+    const SurfacePoint surface = surface_point(ray, hit);
+    resolve_layers(texture, at.point, layers, &surface);
 
     const int quality = options_.quality;
     const bool double_illuminate = hit.double_illuminate;
@@ -200,6 +227,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
 
     RayColour out;
     glm::dvec3 filter(1);
+    glm::dvec3 top_normal = raw_n;  // refraction bends about the top layer's normal
     glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
     bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
@@ -209,7 +237,13 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         SurfaceSample s;
         s.point = hit.point;
         s.view = d;
-        s.normal = raw_n;  // normal perturbation is not implemented: Nl = N
+        // Each layer perturbs the surface normal on its own (POV applies normals from +Q8).
+        s.normal = layer.normal && quality >= 8
+                       ? framed_normal(*layer.normal, raw_n, layer.point, at.frame.then(layer.frame))
+                       : raw_n;
+        if (i == 0) top_normal = s.normal;
+        s.raw_normal = raw_n;
+        s.object = hit.object;
         s.colour = rgb;
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
@@ -252,7 +286,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
             child.continued = true;
             t = trace(Ray{hit.point, d}, child, state, &child_depth);
         } else {
-            const glm::dvec3 nl = raw_n;  // the top layer's shading normal
+            const glm::dvec3 nl = top_normal;
             double n = glm::dot(d, nl);
             glm::dvec3 ln;
             if (n <= 0) {

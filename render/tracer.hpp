@@ -7,6 +7,7 @@
 #include "render/interior_list.hpp"
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
+#include "render/normal_frame.hpp"
 #include "render/shading.hpp"
 #include "render/trace_state.hpp"
 #include "scene/scene.hpp"
@@ -44,13 +45,16 @@ private:
 
     void init(const std::vector<LightSource>& lights);  // the settings both constructors share
     RayColour trace(const Ray& ray, const Context& ctx, ThreadState& state, double* depth) const;
-    // `texture_point` is where the texture is evaluated: the hit point, or within a
-    // texture_map's entry the map's pattern point.
-    RayColour shade(const Ray& ray, const Hit& hit, const glm::dvec3& texture_point,
-                    const Context& ctx, ThreadState& state) const;
+    // Where the texture is evaluated: the hit point with no normal frame, or within a
+    // texture_map's entry the map's pattern point and its frame (render/normal_frame.hpp).
+    struct TexturePoint {
+        glm::dvec3 point;
+        NormalFrame frame;
+    };
+    RayColour shade(const Ray& ray, const Hit& hit, const TexturePoint& at, const Context& ctx,
+                    ThreadState& state) const;
     RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
-                           const glm::dvec3& texture_point, const Context& ctx,
-                           ThreadState& state) const;
+                           const TexturePoint& at, const Context& ctx, ThreadState& state) const;
     RayColour sky(const glm::dvec3& dir) const;
     void apply_fog(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors) const;
     bool find_hit(const Ray& ray, RayKind kind, Hit& hit) const;

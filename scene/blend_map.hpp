@@ -35,4 +35,12 @@ template <class T> BlendWeights blend_weights(const BlendMap<T>& map, double v) 
     return {i - 1, i, w};
 }
 
+// The total of an `average` map's values: each entry weighs value / total (POV-Ray gives
+// black for a total of 0).
+template <class T> double average_total(const BlendMap<T>& map) {
+    double total = 0;
+    for (const auto& e : map) total += e.value;
+    return total;
+}
+
 }  // namespace lumen::scene

@@ -7,6 +7,7 @@
 // render/ once it is rendered. A missing struct, `fields` or evaluator is a compile error.
 #pragma once
 #include <iterator>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -17,6 +18,9 @@
 #include <glm/vec3.hpp>
 
 namespace lumen::scene {
+
+struct Pigment;  // scene/texture.hpp
+
 namespace pattern {
 
 // `fields(kind, f)` calls f(name, value) for each parameter, in dump order; f may mutate.
@@ -102,23 +106,45 @@ struct Arguments {
         f("file", s.file);
     }
 };
-// Fractal `interior`/`exterior` (type, factor) and `exponent`.
-struct Fractal : Arguments {
-    double exponent = 2;
+// The fractal patterns iterate z <- f(z) on the point's (x, y) and colour by how the orbit
+// escapes (`exterior type, factor`) or stays (`interior type, factor`).
+struct Fractal {
+    int iterations = 0;      // the number after the keyword
+    int exponent = 2;        // mandel and julia only: 2..33
     glm::dvec2 interior{0, 1}, exterior{1, 1};
     template <class Self, class F> static void fields(Self& s, F&& f) {
-        Arguments::fields(s, f);
+        f("iterations", s.iterations);
         f("exponent", s.exponent);
         f("interior", s.interior);
         f("exterior", s.exterior);
     }
 };
-struct Aoi : Arguments {};
-struct Average : Arguments {};
-struct Cubic : Arguments {};
-struct Julia : Fractal {};
-struct Mandel : Fractal {};
-struct Magnet : Fractal {};
+struct Aoi : NoFields {};  // the angle between the surface normal and the ray
+// `average pigment_map | texture_map | normal_map { [weight entry] ... }`: the entries
+// weighted, evaluated by the pigment, texture or normal that owns the map.
+struct Average : NoFields {};
+struct Cubic : NoFields {};
+// `julia <c>, N`.
+struct Julia : Fractal {
+    glm::dvec2 c{0, 0};
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Fractal::fields(s, f);
+        f("julia", s.c);
+    }
+};
+struct Mandel : Fractal {};  // `mandel N`
+// `magnet 1|2 mandel N` or `magnet 1|2 julia <c>, N`.
+struct Magnet : Fractal {
+    int type = 1;
+    bool julia = false;
+    glm::dvec2 c{0, 0};  // julia form only
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        Fractal::fields(s, f);
+        f("magnet", s.type);
+        f("julia_form", s.julia);
+        f("julia", s.c);
+    }
+};
 struct Pavement : Arguments {
     double form = 0, interior = 0, exterior = 0;
     template <class Self, class F> static void fields(Self& s, F&& f) {
@@ -128,8 +154,32 @@ struct Pavement : Arguments {
         f("exterior", s.exterior);
     }
 };
-struct Slope : Arguments {};
-struct Tiling : Arguments {};
+// `slope <v>` or `slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }`: how far
+// the surface normal turns towards v (or towards the point v), optionally mixed with the
+// height along a; each part's range [lo, hi] stretches to [0, 1] (lo = hi: left as is).
+struct Slope {
+    glm::dvec3 direction{0, 1, 0};  // normalised; the point itself with point_at
+    double length = 1;              // |v|: the slope's weight against the altitude's
+    bool point_at = false;
+    glm::dvec2 range{0, 0};
+    glm::dvec3 altitude{0, 0, 0};  // normalised; 0 = no altitude
+    double altitude_length = 0;
+    glm::dvec2 altitude_range{0, 0};
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("slope", s.direction);
+        f("length", s.length);
+        f("point_at", s.point_at);
+        f("range", s.range);
+        f("altitude", s.altitude);
+        f("altitude_length", s.altitude_length);
+        f("altitude_range", s.altitude_range);
+    }
+};
+// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1, 2, 3, 5 and 10).
+struct Tiling {
+    int type = 1;
+    template <class Self, class F> static void fields(Self& s, F&& f) { f("tiling", s.type); }
+};
 struct Facets : Arguments {
     double coords = 0, size = 0.1, metric = 2;
     template <class Self, class F> static void fields(Self& s, F&& f) {
@@ -140,11 +190,24 @@ struct Facets : Arguments {
     }
 };
 struct Function : Arguments {};  // function { } pattern
+// `pigment_pattern { pigment }`: the pigment's grey value.
+struct PigmentPattern : NoFields {
+    std::shared_ptr<const Pigment> pigment;
+};
 struct Object : NoFields {};    // object { } pattern
-struct DensityFile : Arguments {
-    double interpolate = 0;
+// The voxels of a df3 file, x fastest, then y, then z, scaled to [0, 1].
+struct DensityGrid {
+    int nx = 0, ny = 0, nz = 0;
+    std::vector<double> values;
+    double at(int x, int y, int z) const { return values[(size_t(z) * ny + y) * nx + x]; }
+};
+// `density_file df3 "file" [interpolate 0|1|2]` over the unit cube.
+struct DensityFile {
+    std::string file;  // as found on the search path
+    int interpolate = 0;  // 0 nearest voxel, 1 trilinear, 2 tricubic
+    std::shared_ptr<const DensityGrid> grid;  // never null once read
     template <class Self, class F> static void fields(Self& s, F&& f) {
-        Arguments::fields(s, f);
+        f("file", s.file);
         f("interpolate", s.interpolate);
     }
 };
@@ -177,30 +240,31 @@ struct DensityFile : Arguments {
     X(Crackle, "crackle", 0, grey_ramp, true)                   \
     X(Dents, "dents", 0, grey_ramp, true)                       \
     X(Granite, "granite", 0, grey_ramp, true)                   \
-    X(Leopard, "leopard", 0, grey_ramp, false)                  \
+    X(Leopard, "leopard", 0, grey_ramp, true)                   \
     X(Marble, "marble", 0, marble, true)                        \
     X(Ripples, "ripples", 0, grey_ramp, true)                   \
     X(Spotted, "spotted", 0, grey_ramp, true)                   \
     X(Waves, "waves", 0, grey_ramp, true)                       \
     X(Wood, "wood", 0, wood, true)                              \
     X(Wrinkles, "wrinkles", 0, grey_ramp, true)                 \
-    X(Quilted, "quilted", 0, grey_ramp, false)                  \
-    X(Aoi, "aoi", 0, grey_ramp, false)                          \
-    X(Average, "average", 0, grey_ramp, false)                  \
+    X(Quilted, "quilted", 0, grey_ramp, true)                   \
+    X(Aoi, "aoi", 0, grey_ramp, true)                           \
+    X(Average, "average", 0, grey_ramp, true)                   \
     X(Cells, "cells", 0, grey_ramp, true)                       \
-    X(Cubic, "cubic", 0, grey_ramp, false)                      \
-    X(Julia, "julia", 0, grey_ramp, false)                      \
-    X(Mandel, "mandel", 0, grey_ramp, false)                    \
-    X(Magnet, "magnet", 0, grey_ramp, false)                    \
+    X(Cubic, "cubic", 6, cubic, true)                           \
+    X(Julia, "julia", 0, grey_ramp, true)                       \
+    X(Mandel, "mandel", 0, mandel, true)                        \
+    X(Magnet, "magnet", 0, grey_ramp, true)                     \
     X(Pavement, "pavement", 0, grey_ramp, false)                \
-    X(Slope, "slope", 0, grey_ramp, false)                      \
+    X(Slope, "slope", 0, grey_ramp, true)                       \
     X(Spiral1, "spiral1", 0, grey_ramp, true)                   \
     X(Spiral2, "spiral2", 0, grey_ramp, true)                   \
-    X(Tiling, "tiling", 0, grey_ramp, false)                    \
+    X(Tiling, "tiling", 0, grey_ramp, true)                     \
     X(Facets, "facets", 0, grey_ramp, false)                    \
     X(Function, "function", 0, grey_ramp, false)                \
+    X(PigmentPattern, "pigment_pattern", 0, grey_ramp, true)    \
     X(Object, "object", 0, grey_ramp, false)                    \
-    X(DensityFile, "density_file", 0, grey_ramp, false)
+    X(DensityFile, "density_file", 0, grey_ramp, true)
 
 #define LUMEN_PATTERN_ENUM(Kind, ...) Kind,
 enum class PatternType { LUMEN_PATTERN_KINDS(LUMEN_PATTERN_ENUM) };

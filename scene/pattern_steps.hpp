@@ -47,12 +47,15 @@ struct Repeat {
     }
 };
 // `warp { black_hole <centre>, radius [falloff] [strength] [repeat <v>] [turbulence <v>]
-// [inverse] }`.
+// [inverse] [type n] }`. With `repeat`, the interp has already raised the centre and the
+// repeat on each repeated axis as POV-Ray does (centre >= radius, repeat >= centre + radius +
+// turbulence); a repeat component below 1e-10 leaves that axis unrepeated.
 struct BlackHole {
     glm::dvec3 centre{0, 0, 0};
     double radius = 1, falloff = 2, strength = 1;
     glm::dvec3 repeat{0, 0, 0}, turbulence{0, 0, 0};
     bool inverse = false;
+    int type = 0;  // POV-Ray 3.7 has only type 0; any other leaves the point as it is
     SourceLoc loc;
     template <class Self, class F> static void fields(Self& s, F&& f) {
         f("black_hole", s.centre);
@@ -62,19 +65,24 @@ struct BlackHole {
         f("repeat", s.repeat);
         f("turbulence", s.turbulence);
         f("inverse", s.inverse);
+        f("type", s.type);
     }
 };
-// `warp { cylindrical | spherical | toroidal | planar | cubic [orientation <v>] [dist_exp f]
-// [major_radius f (toroidal)] }`: mapping warps that wrap the pattern around a shape.
+// `warp { cylindrical | spherical | toroidal [orientation <v>] [dist_exp f]
+// [major_radius f (toroidal)] }`, `warp { planar [<v>, offset] }` and `warp { cubic }`:
+// mapping warps that wrap the pattern around a shape. `orientation` (planar's <v>) is
+// normalised by the interp.
 struct Mapping {
     enum class Shape { Cylindrical, Spherical, Toroidal, Planar, Cubic } shape{};
     glm::dvec3 orientation{0, 0, 1};
     double dist_exp = 0, major_radius = 1;
+    double offset = 0;  // planar: the depth every point gets
     SourceLoc loc;
     template <class Self, class F> static void fields(Self& s, F&& f) {
         f("orientation", s.orientation);
         f("dist_exp", s.dist_exp);
         f("major_radius", s.major_radius);
+        f("offset", s.offset);
     }
 };
 

@@ -12,23 +12,60 @@
 
 namespace lumen::scene {
 
-struct Sphere { glm::dvec3 center{0}; double radius = 1; };
-struct Plane { glm::dvec3 normal{0, 1, 0}; double distance = 0; };  // n̂·p = d, n normalised
-struct Box { glm::dvec3 min{-1}, max{1}; };                         // reordered per axis
-struct Cylinder { glm::dvec3 base{0}, cap{0, 1, 0}; double radius = 1; bool open = false; };
+// Each struct lists its parameters in `fields(shape, f)` (f(name, value) for each, f may
+// mutate), which content hashing walks (scene/content_hash.hpp): a shape without it does not
+// compile there.
+#define LUMEN_FIELDS(...) \
+    template <class Self, class F> static void fields(Self& s, F&& f) { __VA_ARGS__; }
+
+struct Sphere {
+    glm::dvec3 center{0};
+    double radius = 1;
+    LUMEN_FIELDS(f("center", s.center), f("radius", s.radius))
+};
+struct Plane {  // n̂·p = d, n normalised
+    glm::dvec3 normal{0, 1, 0};
+    double distance = 0;
+    LUMEN_FIELDS(f("normal", s.normal), f("distance", s.distance))
+};
+struct Box {  // reordered per axis
+    glm::dvec3 min{-1}, max{1};
+    LUMEN_FIELDS(f("min", s.min), f("max", s.max))
+};
+struct Cylinder {
+    glm::dvec3 base{0}, cap{0, 1, 0};
+    double radius = 1;
+    bool open = false;
+    LUMEN_FIELDS(f("base", s.base), f("cap", s.cap), f("radius", s.radius), f("open", s.open))
+};
 struct Cone {
     glm::dvec3 base{0}; double base_radius = 1;
     glm::dvec3 cap{0, 1, 0}; double cap_radius = 0;
     bool open = false;
+    LUMEN_FIELDS(f("base", s.base), f("base_radius", s.base_radius), f("cap", s.cap),
+                 f("cap_radius", s.cap_radius), f("open", s.open))
 };
-struct Torus { double major = 1, minor = 0.25; bool sturm = false; };  // XZ plane, around Y
-struct Disc { glm::dvec3 center{0}, normal{0, 1, 0}; double radius = 1, hole = 0; };
+struct Torus {  // XZ plane, around Y
+    double major = 1, minor = 0.25;
+    bool sturm = false;
+    LUMEN_FIELDS(f("major", s.major), f("minor", s.minor), f("sturm", s.sturm))
+};
+struct Disc {
+    glm::dvec3 center{0}, normal{0, 1, 0};
+    double radius = 1, hole = 0;
+    LUMEN_FIELDS(f("center", s.center), f("normal", s.normal), f("radius", s.radius),
+                 f("hole", s.hole))
+};
 struct Triangle {
     std::array<glm::dvec3, 3> p{};
     std::array<glm::dvec3, 3> n{};  // vertex normals (normalised), used when smooth
     bool smooth = false;
+    LUMEN_FIELDS(f("points", s.p), f("normals", s.n), f("smooth", s.smooth))
 };
-struct Polygon { std::vector<glm::dvec3> points; };  // as written (sub-polygons closed)
+struct Polygon {  // as written (sub-polygons closed)
+    std::vector<glm::dvec3> points;
+    LUMEN_FIELDS(f("points", s.points))
+};
 struct Mesh {
     std::vector<glm::dvec3> vertices;
     std::vector<glm::dvec3> normals;
@@ -37,9 +74,16 @@ struct Mesh {
         std::array<int, 3> v{};       // vertex indices
         std::array<int, 3> n{-1, -1, -1};  // normal indices (-1 = flat)
         std::array<int, 3> tex{-1, -1, -1};  // texture_list indices (-1 = object texture)
+        LUMEN_FIELDS(f("v", s.v), f("n", s.n), f("tex", s.tex))
     };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // texture_list / per-triangle textures
     std::optional<glm::dvec3> inside_vector;
+    LUMEN_FIELDS(f("vertices", s.vertices), f("normals", s.normals), f("uvs", s.uvs),
+                 f("faces", s.faces), f("textures", s.textures),
+                 f("inside_vector", s.inside_vector))
 };
+
+#undef LUMEN_FIELDS
+
 }  // namespace lumen::scene

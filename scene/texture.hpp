@@ -50,16 +50,23 @@ using FinishPtr = std::shared_ptr<const Finish>;
 struct Normal;
 using NormalPtr = std::shared_ptr<const Normal>;
 using NormalMap = BlendMap<NormalPtr>;
-// slope_map and density_map entries (read as unsupported until slopes and media render).
-using SlopeMap = BlendMap<glm::dvec2>;  // <height, slope>
+// slope_map entries <height, slope>; density_map entries (read as unsupported until media
+// render).
+using SlopeMap = BlendMap<glm::dvec2>;
 using DensityMap = BlendMap<Colour>;
 
+// POV keeps the amount and accuracy in single precision: the interp rounds them to float.
 struct Normal {
     Pattern pattern;                 // Plain = no perturbation
     double amount = 0.5;             // bump size
     double accuracy = 0.02;          // sampling distance of the pattern's slope
     bool no_bump_scale = false;      // bump_size not scaled with the object
-    NormalMap normal_map;            // normal_map, or the list form `checker normal{A} ...`
+    // normal_map, or the list form `checker normal{A} ...`: entries are evaluated at the
+    // pattern-space point of this normal, so this normal's transforms are not copied into them.
+    NormalMap normal_map;
+    // The pattern's value -> the height whose slope tilts the normal. POV keeps one map per
+    // normal: a slope_map and a normal_map replace each other, the last written wins.
+    SlopeMap slope_map;
     SourceLoc loc;
 };
 

@@ -16,6 +16,11 @@ inline noise::Generator generator_of(const scene::Pattern& pattern) {
                                     pattern.globals ? pattern.globals->noise_generator : 2);
 }
 
+// The scene's number_of_waves, as ripples and waves (patterns and normals) see it.
+inline int wave_count_of(const scene::Pattern& pattern) {
+    return pattern.globals ? pattern.globals->number_of_waves : 10;
+}
+
 // The parameters of the pattern's classic turbulence, or POV's defaults (amount 0, 6 octaves,
 // omega 0.5, lambda 2) where it has none.
 inline const scene::TurbulenceParams& classic_turbulence_of(const scene::Pattern& pattern) {

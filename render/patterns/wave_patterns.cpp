@@ -8,8 +8,6 @@
 namespace lumen::render {
 namespace {
 
-int wave_count(const scene::Pattern& pat) { return pat.globals ? pat.globals->number_of_waves : 10; }
-
 // Distance to the source; POV takes 1 at the source itself.
 double distance_to(const glm::dvec3& p, const glm::dvec3& source) {
     const glm::dvec3 d = p - source;
@@ -20,7 +18,7 @@ double distance_to(const glm::dvec3& p, const glm::dvec3& source) {
 }  // namespace
 
 double evaluate(const pattern::Ripples&, const glm::dvec3& p, const scene::Pattern& pat) {
-    const auto waves = noise::waves(wave_count(pat));
+    const auto waves = noise::waves(wave_count_of(pat));
     double sum = 0;
     for (const noise::Wave& w : waves)
         sum += noise::cycloidal(distance_to(p, w.source) * pat.frequency + pat.phase);
@@ -29,7 +27,7 @@ double evaluate(const pattern::Ripples&, const glm::dvec3& p, const scene::Patte
 
 // Each source at its own frequency, its amplitude inversely proportional to it; can leave [0, 1].
 double evaluate(const pattern::Waves&, const glm::dvec3& p, const scene::Pattern& pat) {
-    const auto waves = noise::waves(wave_count(pat));
+    const auto waves = noise::waves(wave_count_of(pat));
     double sum = 0;
     for (const noise::Wave& w : waves)
         sum += noise::cycloidal(distance_to(p, w.source) * pat.frequency * w.frequency + pat.phase) /

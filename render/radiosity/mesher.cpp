@@ -23,8 +23,8 @@ constexpr double two_pi = 2 * std::numbers::pi;
 
 class Builder {
 public:
-    Builder(const scene::Object& o, const MeshOptions& opt, const SurfaceProps& props)
-        : xf_(o.transform), opt_(opt), props_(props) {
+    Builder(const scene::Transform& to_world, const MeshOptions& opt, const SurfaceProps& props)
+        : xf_(to_world), opt_(opt), props_(props) {
         mirrored_ = glm::determinant(glm::dmat3(xf_.m)) < 0;
     }
 
@@ -169,10 +169,10 @@ std::vector<glm::dvec3> clip(const std::vector<glm::dvec3>& poly, const glm::dve
     return out;
 }
 
-void mesh_plane(const scene::Object& o, const scene::Plane& pl, const MeshOptions& opt,
+void mesh_plane(const scene::Transform& to_world, const scene::Plane& pl, const MeshOptions& opt,
                 Builder& b) {
-    const glm::dvec3 n = glm::normalize(o.transform.normal(pl.normal));
-    const glm::dvec3 origin = o.transform.point(pl.normal * pl.distance);
+    const glm::dvec3 n = glm::normalize(to_world.normal(pl.normal));
+    const glm::dvec3 origin = to_world.point(pl.normal * pl.distance);
     glm::dvec3 u, w;
     tangent_frame(n, u, w);
     const glm::dvec3 centre = 0.5 * (opt.bounds_min + opt.bounds_max);
@@ -243,11 +243,11 @@ struct NotMeshed {};
 // One case per scene shape and no catch-all: a listed shape (scene/shape_list.hpp) must be
 // meshed here or declared NotMeshed.
 struct ShapeMesher {
-    const scene::Object& o;
+    const scene::Transform& to_world;
     const MeshOptions& opt;
     Builder& b;
     void operator()(const scene::Sphere& s) const { mesh_sphere(s, b); }
-    void operator()(const scene::Plane& s) const { mesh_plane(o, s, opt, b); }
+    void operator()(const scene::Plane& s) const { mesh_plane(to_world, s, opt, b); }
     void operator()(const scene::Box& s) const { mesh_box(s, b); }
     void operator()(const scene::Cylinder& s) const {
         mesh_cone(s.base, s.radius, s.cap, s.radius, s.open, b);
@@ -317,10 +317,10 @@ bool meshable(const scene::Object& o) {
         o.shape);
 }
 
-std::vector<Patch> mesh_object(const scene::Object& o, const MeshOptions& opt,
-                               const SurfaceProps& props) {
-    Builder b(o, opt, props);
-    std::visit<void>(ShapeMesher{o, opt, b}, o.shape);  // a NotMeshed answer adds nothing
+std::vector<Patch> mesh_object(const scene::Object& o, const scene::Transform& to_world,
+                               const MeshOptions& opt, const SurfaceProps& props) {
+    Builder b(to_world, opt, props);
+    std::visit<void>(ShapeMesher{to_world, opt, b}, o.shape);  // a NotMeshed answer adds nothing
     return std::move(b.out);
 }
 

@@ -31,10 +31,16 @@ struct SurfaceProps {
 // True when mesh_object produces patches for this shape.
 bool meshable(const scene::Object& object);
 
-// The object's surface as patches whose edges are at most about max_edge long, front sides
-// facing out of the solid (or in, with options.inward). Degenerate pieces are dropped.
-std::vector<Patch> mesh_object(const scene::Object& object, const MeshOptions& options,
-                               const SurfaceProps& props);
+// The object's surface placed by `to_world`, as patches whose edges are at most about
+// max_edge long, front sides facing out of the solid (or in, with options.inward). Degenerate
+// pieces are dropped.
+std::vector<Patch> mesh_object(const scene::Object& object, const scene::Transform& to_world,
+                               const MeshOptions& options, const SurfaceProps& props);
+// The same, placed by the object's own transform.
+inline std::vector<Patch> mesh_object(const scene::Object& object, const MeshOptions& options,
+                                      const SurfaceProps& props) {
+    return mesh_object(object, object.transform, options, props);
+}
 
 // Splits a simple (possibly non-convex) planar polygon into triangles by ear clipping.
 // Returns vertex index triples into `loop`.

@@ -16,45 +16,32 @@ namespace lumen::render::radiosity {
 
 namespace {
 
-// A primitive to mesh: its world transform composed through its CSG parents, the texture it
-// inherits, and the original object (the pointer tracer hits carry).
-struct Piece {
-    scene::Object placed;  // copy with the world transform
-    const scene::Object* original;
-    const scene::LayeredTexture* texture;
-};
-
-void collect(const scene::Object& o, const scene::Transform& to_world,
-             const scene::LayeredTexture* inherited, bool hidden, std::vector<Piece>& out,
-             std::vector<std::string>& warnings) {
-    const scene::LayeredTexture* texture = o.texture.empty() ? inherited : &o.texture;
-    hidden = hidden || o.no_radiosity;
-    if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
-        if (csg->op != scene::CsgOp::Union) {
-            if (!hidden)
-                warnings.push_back(o.loc.str() +
-                                   ": warning: radiosity does not mesh this CSG (only unions); "
-                                   "it occludes but gets no indirect light");
-            return;
+// The objects the geometry compiled (unions flattened, so each carries the transform and
+// texture it inherits) that get patches; the rest are noted in `warnings`.
+std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry,
+                                                std::vector<std::string>& warnings) {
+    std::vector<const PlacedObject*> out;
+    for (const PlacedObject& p : geometry.placed_objects()) {
+        const scene::Object& o = *p.object;
+        if (p.no_radiosity) continue;  // invisible to radiosity: not meshed, skipped by gathers
+        if (p.csg) {
+            warnings.push_back(o.loc.str() +
+                               ": warning: radiosity does not mesh this CSG (only unions); "
+                               "it occludes but gets no indirect light");
+            continue;
         }
-        const scene::Transform world = o.transform.then(to_world);
-        for (const auto& child : csg->children)
-            if (child) collect(*child, world, texture, hidden, out, warnings);
-        return;
+        if (!meshable(o)) {
+            warnings.push_back(o.loc.str() +
+                               ": warning: radiosity cannot mesh this shape; it occludes but "
+                               "gets no indirect light");
+            continue;
+        }
+        if (p.clipped)
+            warnings.push_back(o.loc.str() +
+                               ": warning: radiosity meshes this object without its clipped_by");
+        out.push_back(&p);
     }
-    if (hidden) return;  // invisible to radiosity: not meshed, skipped by gathers
-    if (!meshable(o)) {
-        warnings.push_back(o.loc.str() +
-                           ": warning: radiosity cannot mesh this shape; it occludes but gets "
-                           "no indirect light");
-        return;
-    }
-    if (!o.clipped_by.empty())
-        warnings.push_back(o.loc.str() +
-                           ": warning: radiosity meshes this object without its clipped_by");
-    Piece p{o, &o, texture};
-    p.placed.transform = o.transform.then(to_world);
-    out.push_back(std::move(p));
+    return out;
 }
 
 // Diffuse reflectance, emission and brilliance of the top layer at p (POV: diffuse × pigment).
@@ -96,7 +83,7 @@ private:
     std::map<WeldKey, uint32_t> index_;
 };
 
-void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const Piece& piece) {
+void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const PlacedObject& piece) {
     // Quads and fans become triangles: values interpolate barycentrically.
     const size_t n = p.vertices.size();
     for (size_t k = 1; k + 1 < n; ++k) {
@@ -107,7 +94,7 @@ void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const Piece& pie
         MeshElement e;
         e.normal = cr / len;
         e.area = 0.5 * len;
-        e.object = piece.original;
+        e.object = piece.object;
         e.v = {welder.vertex(a, p.normal, piece.texture), welder.vertex(b, p.normal, piece.texture),
                welder.vertex(c, p.normal, piece.texture)};
         mesh.elements.push_back(e);
@@ -156,11 +143,9 @@ double default_patch_size(const Aabb& bounds) {
     return diagonal > 0 ? diagonal / 38 : 1.0;
 }
 
-SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
+SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size) {
     SceneMesh mesh;
-    std::vector<Piece> pieces;
-    for (const auto& o : scene.objects)
-        if (o) collect(*o, scene::Transform{}, nullptr, false, pieces, mesh.warnings);
+    const std::vector<const PlacedObject*> pieces = meshed_objects(geometry, mesh.warnings);
 
     // Finite shapes first: their extent bounds the infinite planes.
     MeshOptions opt;
@@ -168,9 +153,9 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
     Aabb bounds;
     const double coarse = 1e30;  // one patch per face: only the extent matters here
     for (size_t i = 0; i < pieces.size(); ++i) {
-        if (std::holds_alternative<scene::Plane>(pieces[i].placed.shape)) continue;
+        if (std::holds_alternative<scene::Plane>(pieces[i]->object->shape)) continue;
         opt.max_edge = coarse;
-        for (const Patch& p : mesh_object(pieces[i].placed, opt, {}))
+        for (const Patch& p : mesh_object(*pieces[i]->object, pieces[i]->to_world, opt, {}))
             for (const auto& v : p.vertices) bounds.expand(v);
     }
     if (bounds.empty()) bounds = {glm::dvec3(-10), glm::dvec3(10)};
@@ -182,9 +167,9 @@ SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size) {
     opt.max_edge = mesh.patch_size;
 
     Welder welder(mesh, mesh.patch_size * 1e-6);
-    for (const Piece& piece : pieces)
-        for (const Patch& p : mesh_object(piece.placed, opt, {}))
-            add_patch(mesh, welder, p, piece);
+    for (const PlacedObject* piece : pieces)
+        for (const Patch& p : mesh_object(*piece->object, piece->to_world, opt, {}))
+            add_patch(mesh, welder, p, *piece);
 
     // Vertex areas and the direction into the adjacent elements (gathers start a hair inside
     // them, off shared edges and corners).

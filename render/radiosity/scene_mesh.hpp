@@ -13,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "render/bvh.hpp"
+#include "render/geometry.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::render::radiosity {
@@ -74,8 +75,9 @@ struct SceneMesh {
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).
 double default_patch_size(const Aabb& bounds);
 
-// Meshes every meshable object (through unions; other CSG, no_radiosity and unsupported
-// shapes are left out and noted in `warnings`), infinite planes clipped to the bounds.
-SceneMesh build_scene_mesh(const scene::Scene& scene, double patch_size);
+// Meshes every meshable object of the compiled geometry (the tracer's: through unions; other
+// CSG, no_radiosity and unsupported shapes are left out and noted in `warnings`), infinite
+// planes clipped to the bounds.
+SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size);
 
 }  // namespace lumen::render::radiosity

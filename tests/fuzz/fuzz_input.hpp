@@ -15,7 +15,7 @@ namespace lumen::fuzz {
 inline interp::InterpOptions small_limits() {
     interp::InterpOptions o;
     o.max_loop_iterations = 2000;  // nested loops multiply: keep each one short
-    o.max_steps = 200'000;
+    o.max_steps = 50'000;  // a few s under ASan (200k macro calls took > 10 s, loaded)
     o.max_string_length = size_t(1) << 20;
     o.max_array_elements = 100'000;
     o.max_memory = size_t(1) << 30;

@@ -1,0 +1,16 @@
+// Patterns whose value comes from another scene element: pigment_pattern (a pigment's grey),
+// density_file (a df3 voxel grid), and average, whose entries the owning pigment or texture
+// evaluates itself.
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "scene/pattern_kinds.hpp"
+
+namespace lumen::render {
+
+// Never asked for a value: render/pigment.cpp and the texture code weigh the map's entries.
+double evaluate(const scene::pattern::Average&, const glm::dvec3& p);
+double evaluate(const scene::pattern::PigmentPattern& k, const glm::dvec3& p);
+double evaluate(const scene::pattern::DensityFile& k, const glm::dvec3& p);
+
+}  // namespace lumen::render
