@@ -42,12 +42,11 @@ scene::Fog build_fog(ItemCursor& cur) {
         else if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" ||
                  w == "rgbft") {
             fog.colour = cur.expect_colour(w);
-        } else if (w == "turbulence") {
-            fog.turbulence = cur.expect_vector(w);
-            if (!fog.unsupported) fog.unsupported = scene::Unsupported{"fog turbulence", item.loc};
-        } else if (w == "turb_depth") fog.turb_depth = cur.expect_float(w);
-        else if (w == "omega" || w == "lambda") cur.expect_float(w);
-        else if (w == "octaves") cur.expect_int(w);
+        } else if (w == "turbulence") fog.turbulence.amount = cur.expect_vector(w);
+        else if (w == "turb_depth") fog.turb_depth = cur.expect_float(w);
+        else if (w == "omega") fog.turbulence.omega = single_precision(cur.expect_float(w));
+        else if (w == "lambda") fog.turbulence.lambda = single_precision(cur.expect_float(w));
+        else if (w == "octaves") fog.turbulence.octaves = cur.expect_int(w);
         else if (w == "fog_offset") fog.offset = cur.expect_float(w);
         else if (w == "fog_alt") fog.alt = cur.expect_float(w);
         else if (w == "up") fog.up = cur.expect_vector(w);

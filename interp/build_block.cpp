@@ -57,7 +57,6 @@ void collect(const scene::LayeredTexture& layers, std::vector<scene::Unsupported
         if (!t) continue;
         collect(t->pattern, out);
         collect(t->pigment, out);
-        if (t->finish && t->finish->unsupported) out.push_back(*t->finish->unsupported);
         collect(t->normal, out);
         for (const auto& e : t->texture_map) collect(e.item, out);
     }
@@ -220,6 +219,11 @@ void apply_default(BuildContext& ctx, const BlockValue& block) {
 }
 
 void finish_scene(BuildContext& ctx, scene::Scene& scene) {
+    // Without global_settings { noise_generator }, POV uses the original noise for scenes
+    // whose final #version is below 3.5.
+    scene::GlobalSettings& g = scene.globals;
+    if (!ctx.noise_generator_given && scene.language_version < 3.5) g.noise_generator = 1;
+    *ctx.pattern_globals = {g.noise_generator, g.number_of_waves};
     std::vector<scene::Unsupported> out;
     for (const auto& o : scene.objects) collect(o, out);
     if (scene.camera.unsupported) out.push_back(*scene.camera.unsupported);

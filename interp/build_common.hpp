@@ -2,6 +2,7 @@
 // a block body through an ItemCursor, so map entries (`[0.5 pigment_body]`) and #declared
 // copies reuse the same code as the blocks themselves.
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,8 @@ const std::vector<std::string>& transform_keywords();
 scene::Transform build_transform_block(ItemCursor& cur);
 
 // Patterns move with everything written after them: a transform appends to the pattern's
-// steps, also in every map entry below it (POV-Ray transforms a whole pigment or texture); a
-// normal's normal_map entries live in its pattern space and need no copy.
+// steps. A map's entries are evaluated at the point their parent's steps give (as POV-Ray
+// does), so they move with it and are not transformed themselves.
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
@@ -50,6 +51,11 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
 // kind, or an error when the kind does not take it. False when `kw` is no such modifier.
 bool read_pattern_kind_modifier(ItemCursor& cur, const Item& kw, scene::Pattern& pattern);
 const std::vector<std::string>& pattern_kind_keywords();
+// A value POV-Ray stores in single precision (frequency, phase, turbulence omega and lambda,
+// ...), rounded as it does; values beyond float's range are kept.
+inline double single_precision(double v) {
+    return std::fabs(v) <= 3.4028234663852886e38 ? double(float(v)) : v;
+}
 // `warp { ... }`: appends the warp to the pattern's steps (build_warp.cpp).
 void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern);
 

@@ -65,12 +65,7 @@ void read_irid_block(BuildContext& ctx, const BlockValue& block, scene::Finish& 
         const Item& item = cur.next();
         const std::string w = item.kind == Item::Kind::Keyword ? item.keyword : "";
         if (w == "thickness") f.irid_thickness = cur.expect_float(w);
-        else if (w == "turbulence") {
-            f.irid_turbulence = cur.expect_float(w);
-            // The film thickness would vary with noise, which lumen does not have yet.
-            if (f.irid_turbulence != 0) f.unsupported = scene::Unsupported{"irid turbulence", item.loc};
-            else f.unsupported.reset();
-        }
+        else if (w == "turbulence") f.irid_turbulence = cur.expect_float(w);
         else cur.fail_unexpected(item, {"thickness", "turbulence"});
     }
 }
@@ -105,7 +100,6 @@ scene::FinishPtr apply_finish(const scene::FinishPtr& base, const scene::FinishP
     take(kIrid, &scene::Finish::irid_amount);
     take(kIrid, &scene::Finish::irid_thickness);
     take(kIrid, &scene::Finish::irid_turbulence);
-    take(kIrid, &scene::Finish::unsupported);
     take(kIor, &scene::Finish::ior);
     out->loc = f->loc;
     return out;

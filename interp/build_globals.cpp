@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "interp/build_common.hpp"
+#include "noise/noise.hpp"
 
 namespace lumen::interp {
 
@@ -87,7 +88,13 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& g) {
             g.noise_generator = cur.expect_int(w);
             if (g.noise_generator < 1 || g.noise_generator > 3)
                 cur.fail(item.loc, "noise_generator must be 1, 2 or 3");
-        } else if (w == "number_of_waves") g.number_of_waves = cur.expect_int(w);
+            cur.ctx().noise_generator_given = true;
+        } else if (w == "number_of_waves") {
+            g.number_of_waves = cur.expect_int(w);
+            if (g.number_of_waves > noise::kMaxWaves)
+                g.unsupported.push_back({"number_of_waves above " +
+                                             std::to_string(noise::kMaxWaves), item.loc});
+        }
         else if (w == "charset") {
             if (!cur.accept_keyword("ascii") && !cur.accept_keyword("utf8") &&
                 !cur.accept_keyword("sys"))

@@ -33,16 +33,16 @@ TEST_F(BuildNormal, EveryKindIsReportedUnlessItRendersAsANormal) {
         }
         rendered += expected;
     }
-    // The differenced kinds that render for pigments, bumps, wrinkles, quilted, facets and
-    // average.
+    // The differenced kinds that render for pigments and every dedicated form.
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Bumps));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Wrinkles));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Quilted));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Average));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Gradient));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Facets));
-    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Dents));  // needs the scene's generator
-    EXPECT_GE(rendered, 17);
+    EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Dents));
+    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Pavement));
+    EXPECT_GE(rendered, 30);
 }
 
 TEST_F(BuildNormal, AmountAndAccuracyAreSinglePrecision) {
@@ -88,9 +88,9 @@ TEST_F(BuildNormal, SlopeMapAndNormalMapReplaceEachOther) {
 // An unrendered pattern inside a normal_map entry is reported like one at the top.
 TEST_F(BuildNormal, UnrenderedEntriesAreReported) {
     const scene::Scene s = run(
-        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 dents] } } }");
+        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 pavement] } } }");
     ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "normal 'dents'");
+    EXPECT_EQ(s.unsupported[0].feature, "normal 'pavement'");
     EXPECT_TRUE(run("sphere { 0, 1 normal { checker normal { quilted } normal { onion } } }")
                     .unsupported.empty());
 }

@@ -17,11 +17,19 @@ const scene::PatternInfo* find_pattern(std::string_view w) {
     return nullptr;
 }
 
+// POV gives marble, wood and the spirals the triangle wave when it reads their keyword.
+scene::WaveType default_wave(PatternType type) {
+    const bool triangle = type == PatternType::Marble || type == PatternType::Wood ||
+                          type == PatternType::Spiral1 || type == PatternType::Spiral2;
+    return triangle ? scene::WaveType::Triangle : scene::WaveType::Ramp;
+}
+
 // Sets the pattern's kind and marks it unsupported where lumen does not render it (as a
 // normal: scene/normal_forms.hpp).
 void set_kind(scene::Pattern& pattern, PatternType type, const std::string& word,
               const std::string& owner, SourceLoc loc) {
     pattern.kind = scene::make_pattern_kind(type);
+    pattern.wave = default_wave(type);
     const bool rendered =
         owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
     if (!rendered)
@@ -33,24 +41,18 @@ bool read_turbulence_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pa
     const std::string& w = kw.keyword;
     if (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda") return false;
     scene::TurbulenceParams& turb = pattern.steps.classic_turbulence();
-    if (w == "turbulence") {
-        turb.amount = cur.expect_vector(w);
-        mark_unsupported(pattern, "turbulence", kw.loc);  // needs the noise functions
-    } else if (w == "octaves") {
-        turb.octaves = cur.expect_int(w);
-    } else if (w == "omega") {
-        turb.omega = cur.expect_float(w);
-    } else {
-        turb.lambda = cur.expect_float(w);
-    }
+    if (w == "turbulence") turb.amount = cur.expect_vector(w);
+    else if (w == "octaves") turb.octaves = cur.expect_int(w);
+    else if (w == "omega") turb.omega = single_precision(cur.expect_float(w));
+    else turb.lambda = single_precision(cur.expect_float(w));
     return true;
 }
 
 // frequency, phase, the wave types and noise_generator.
 bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pattern) {
     const std::string& w = kw.keyword;
-    if (w == "frequency") pattern.frequency = cur.expect_float(w);
-    else if (w == "phase") pattern.phase = cur.expect_float(w);
+    if (w == "frequency") pattern.frequency = single_precision(cur.expect_float(w));
+    else if (w == "phase") pattern.phase = single_precision(cur.expect_float(w));
     else if (w == "ramp_wave") pattern.wave = scene::WaveType::Ramp;
     else if (w == "sine_wave") pattern.wave = scene::WaveType::Sine;
     else if (w == "triangle_wave") pattern.wave = scene::WaveType::Triangle;
@@ -58,7 +60,7 @@ bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patter
     else if (w == "cubic_wave") pattern.wave = scene::WaveType::Cubic;
     else if (w == "poly_wave") {
         pattern.wave = scene::WaveType::Poly;
-        if (auto e = cur.optional_float()) pattern.wave_exponent = *e;
+        if (auto e = cur.optional_float()) pattern.wave_exponent = single_precision(*e);
     } else if (w == "noise_generator") {
         const int g = cur.expect_int(w);
         if (g < 0 || g > 3) cur.fail(kw.loc, "noise_generator must be 0, 1, 2 or 3");
@@ -137,6 +139,7 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
     const std::string& w = kw.keyword;
     if (const scene::PatternInfo* p = find_pattern(w)) {
         set_kind(pattern, p->type, w, owner, kw.loc);
+        pattern.globals = cur.ctx().pattern_globals;
         read_pattern_arguments(cur, kw, pattern);
         return true;
     }

@@ -62,6 +62,15 @@ template <class Kind, auto Member> struct In {
         return true;
     }
 };
+// The same for a parameter POV stores in single precision.
+template <class Kind, auto Member> struct SingleIn {
+    static bool read(ItemCursor& cur, const std::string& w, scene::PatternKind& kind) {
+        if (!In<Kind, Member>::read(cur, w, kind)) return false;
+        double& field = std::get<Kind>(kind).*Member;
+        field = single_precision(field);
+        return true;
+    }
+};
 // Reads the modifier into the first of `Ins` whose kind the pattern has; false if none.
 template <class... Ins> bool read_in(ItemCursor& cur, const std::string& w, scene::PatternKind& kind) {
     return (Ins::read(cur, w, kind) || ...);
@@ -100,7 +109,7 @@ const KindModifier kKindModifiers[] = {
              In<pattern::Pavement, &pattern::Pavement::exterior>>},
     {"control0", "a quilted pattern", read_in<In<pattern::Quilted, &pattern::Quilted::control0>>},
     {"control1", "a quilted pattern", read_in<In<pattern::Quilted, &pattern::Quilted::control1>>},
-    {"agate_turb", "an agate pattern", read_in<In<pattern::Agate, &pattern::Agate::agate_turb>>},
+    {"agate_turb", "an agate pattern", read_in<SingleIn<pattern::Agate, &pattern::Agate::agate_turb>>},
     {"interpolate", "a density_file pattern",
      read_in<In<pattern::DensityFile, &pattern::DensityFile::interpolate>>},
     {"coords", "a facets pattern", read_in<In<pattern::Facets, &pattern::Facets::coords>>},
@@ -124,6 +133,7 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
                               if (glm::length(v) == 0.0) cur.fail(kw.loc, "gradient vector is zero");
                               g.direction = glm::normalize(v);
                           },
+                          [&](pattern::Spiral& s) { s.arms = cur.expect_int(kw.keyword); },
                           [&](pattern::Arguments& a) { read_raw_arguments(cur, a); },
                           [](AnyKind) {}},  // the other kinds take no arguments
                pattern.kind);

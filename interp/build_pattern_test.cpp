@@ -12,6 +12,7 @@ namespace pattern = scene::pattern;
 std::string pigment_text(std::string_view keyword) {
     std::string body(keyword);
     if (keyword == "gradient") body += " y";
+    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
     return "sphere { 0, 1 pigment { " + body + " } }";
 }
 
@@ -107,7 +108,7 @@ TEST_F(BuildPattern, StepsInTheOrderPovAppliesThem) {
     expect_vec(repeat.direction, {1, 0, 0});
     expect_vec(repeat.offset, {0, 1, 0});
     expect_vec(std::get<scene::Transform>(steps[3]).point({1, 0, 0}), {0, 0, -1});
-    EXPECT_EQ(t.pigment->pattern.unsupported->feature, "turbulence");
+    EXPECT_EQ(t.pigment->pattern.unsupported->feature, "warp");  // the repeat warp
 }
 
 // A pigment's transforms written outside the pattern join the same list.
@@ -122,7 +123,7 @@ TEST_F(BuildPattern, ObjectTransformsJoinTheSteps) {
 
 TEST_F(BuildPattern, EveryWarpTypeIsReadAndReportedUnsupported) {
     for (const char* warp :
-         {"turbulence 0.2 octaves 2 omega 0.4 lambda 2.5", "repeat x offset y flip x",
+         {"repeat x offset y flip x",
           "black_hole 0, 1 falloff 2 strength 1 repeat x turbulence 0.1 inverse",
           "cylindrical orientation y dist_exp 1", "spherical", "toroidal major_radius 2",
           "planar", "cubic"}) {
@@ -132,6 +133,9 @@ TEST_F(BuildPattern, EveryWarpTypeIsReadAndReportedUnsupported) {
         EXPECT_EQ(s.unsupported[0].feature, "warp");
         EXPECT_EQ(s.unsupported[0].loc.column, 33u);
     }
+    const scene::Scene turbulence = run(
+        "sphere { 0, 1 pigment { checker warp { turbulence 0.2 octaves 2 omega 0.4 lambda 2.5 } } }");
+    EXPECT_TRUE(turbulence.unsupported.empty());
     EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { } } }").find("expected a warp type"),
               std::string::npos);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { checker warp { turbulence 0.2 repeat x } } }"),
@@ -162,6 +166,71 @@ TEST_F(BuildPattern, UnbuiltBlocksMarkThePattern) {
     EXPECT_EQ(s.unsupported[0].feature, "image_map");
     EXPECT_EQ(s.unsupported[1].feature, "slope");
     EXPECT_EQ(s.unsupported[1].loc.line, 2u);
+}
+
+// POV stores these in single precision; lumen rounds them the same way when it reads them.
+TEST_F(BuildPattern, SinglePrecisionParameters) {
+    const scene::Texture t = texture_of(
+        "sphere { 0, 1 pigment { agate agate_turb 0.3 frequency 0.7 phase 0.1 poly_wave 1.3 "
+        "turbulence 0.5 omega 0.6 lambda 2.2 warp { turbulence 0.1 omega 0.35 lambda 1.9 } } }");
+    const scene::Pattern& p = t.pigment->pattern;
+    EXPECT_EQ(p.frequency, double(0.7f));
+    EXPECT_EQ(p.phase, double(0.1f));
+    EXPECT_EQ(p.wave_exponent, double(1.3f));
+    EXPECT_EQ(std::get<pattern::Agate>(p.kind).agate_turb, double(0.3f));
+    EXPECT_EQ(p.steps.classic_turbulence()->omega, double(0.6f));
+    EXPECT_EQ(p.steps.classic_turbulence()->lambda, double(2.2f));
+    const auto& warp = std::get<scene::warp::Turbulence>(p.steps.steps.back());
+    EXPECT_EQ(warp.omega, double(0.35f));
+    EXPECT_EQ(warp.lambda, double(1.9f));
+    expect_vec(p.steps.classic_turbulence()->amount, {0.5, 0.5, 0.5});  // double
+}
+
+TEST_F(BuildPattern, SpiralArmsAreTruncatedAndMarbleWoodSpiralsDefaultToTriangleWaves) {
+    const scene::Pattern s1 = texture_of("sphere { 0, 1 pigment { spiral1 3.7 } }").pigment->pattern;
+    EXPECT_EQ(std::get<pattern::Spiral1>(s1.kind).arms, 3);
+    EXPECT_EQ(s1.wave, scene::WaveType::Triangle);
+    EXPECT_EQ(std::get<pattern::Spiral2>(
+                  texture_of("sphere { 0, 1 pigment { spiral2 -2.5 } }").pigment->pattern.kind)
+                  .arms,
+              -2);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { spiral1 } }"), "no error");
+    for (const char* kw : {"marble", "wood"})
+        EXPECT_EQ(texture_of(std::string("sphere { 0, 1 pigment { ") + kw + " } }").pigment->pattern.wave,
+                  scene::WaveType::Triangle)
+            << kw;
+    EXPECT_EQ(texture_of("sphere { 0, 1 pigment { marble ramp_wave } }").pigment->pattern.wave,
+              scene::WaveType::Ramp);
+    EXPECT_EQ(texture_of("sphere { 0, 1 pigment { bozo } }").pigment->pattern.wave,
+              scene::WaveType::Ramp);
+}
+
+// The scene's noise generator and number of waves reach every pattern through one shared
+// record, filled in once the whole scene is read: a global_settings after the pattern counts,
+// and without one the generator follows the final #version (1 below 3.5).
+TEST_F(BuildPattern, PatternsSeeTheFinalGlobalSettings) {
+    const scene::Scene late = run(
+        "sphere { 0, 1 pigment { bozo } }\n"
+        "global_settings { noise_generator 3 number_of_waves 4 }");
+    const scene::Pattern& p = late.objects[0]->texture.back()->pigment->pattern;
+    ASSERT_TRUE(p.globals);
+    EXPECT_EQ(p.globals->noise_generator, 3);
+    EXPECT_EQ(p.globals->number_of_waves, 4);
+    auto generator = [&](const std::string& text) {
+        const scene::Scene s = run(text);
+        EXPECT_EQ(s.objects[0]->texture.back()->pigment->pattern.globals->noise_generator,
+                  s.globals.noise_generator);
+        return s.globals.noise_generator;
+    };
+    EXPECT_EQ(generator("sphere { 0, 1 pigment { bozo } }"), 2);
+    EXPECT_EQ(generator("#version 3.1;\nsphere { 0, 1 pigment { bozo } }"), 1);
+    EXPECT_EQ(generator("#version 3.1;\nsphere { 0, 1 pigment { bozo } }\n#version 3.7;"), 2);
+    EXPECT_EQ(generator("#version 3.1;\nglobal_settings { noise_generator 2 }\n"
+                        "sphere { 0, 1 pigment { bozo } }"),
+              2);
+    const scene::Scene many = run("global_settings { number_of_waves 20000 }");
+    ASSERT_EQ(many.unsupported.size(), 1u);
+    EXPECT_EQ(many.unsupported[0].feature, "number_of_waves above 10000");
 }
 
 }  // namespace

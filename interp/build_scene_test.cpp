@@ -55,7 +55,15 @@ TEST_F(BuildScene, FogGround) {
     expect_vec(f.up, {0, 0, 1});
     EXPECT_FALSE(f.transform.is_identity());
     EXPECT_TRUE(s.unsupported.empty());
-    EXPECT_EQ(run("fog { distance 1 turbulence 0.5 }").unsupported[0].feature, "fog turbulence");
+    const scene::Scene t = run("fog { distance 1 turbulence 0.5 turb_depth 0.3 octaves 3 omega 0.6 "
+                               "lambda 2.2 }");
+    EXPECT_TRUE(t.unsupported.empty());
+    const scene::TurbulenceParams& turb = t.fogs[0].turbulence;
+    expect_vec(turb.amount, {0.5, 0.5, 0.5});
+    EXPECT_EQ(turb.octaves, 3);
+    EXPECT_EQ(turb.omega, double(0.6f));
+    EXPECT_EQ(turb.lambda, double(2.2f));
+    EXPECT_DOUBLE_EQ(t.fogs[0].turb_depth, 0.3);
 }
 
 TEST_F(BuildScene, SkySphere) {
@@ -68,13 +76,13 @@ TEST_F(BuildScene, SkySphere) {
 
 TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
     scene::Scene s = run(
-        "#declare P = pigment { granite }\n"
+        "#declare P = pigment { image_map { png \"a.png\" } }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "camera { panoramic }\n"
         "isosurface { function { x } }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
-    EXPECT_EQ(s.unsupported[0].feature, "pattern 'granite'");
+    EXPECT_EQ(s.unsupported[0].feature, "image_map");
     EXPECT_EQ(s.unsupported[1].feature, "camera 'panoramic'");
     EXPECT_EQ(s.unsupported[2].feature, "isosurface");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);

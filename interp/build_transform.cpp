@@ -126,8 +126,7 @@ Transform build_transform_block(ItemCursor& cur) {
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
     if (!p) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
-    copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->pigment_map) e.item = transformed(e.item, t);
+    copy->pattern.steps.add_transform(t);  // the map's entries follow (render/pattern.hpp)
     return copy;
 }
 
@@ -146,7 +145,6 @@ scene::TexturePtr transformed(const scene::TexturePtr& tex, const Transform& t) 
     copy->pigment = transformed(copy->pigment, t);
     copy->normal = transformed(copy->normal, t);
     copy->pattern.steps.add_transform(t);
-    for (auto& e : copy->texture_map) e.item = transformed(e.item, t);
     return copy;
 }
 

@@ -27,8 +27,8 @@ scene::warp::Turbulence read_turbulence(ItemCursor& cur, SourceLoc loc) {
     t.amount = cur.expect_vector("turbulence");
     read_options(cur, {"octaves", "omega", "lambda"}, [&](const std::string& w) {
         if (w == "octaves") t.octaves = cur.expect_int(w);
-        else if (w == "omega") t.omega = cur.expect_float(w);
-        else if (w == "lambda") t.lambda = cur.expect_float(w);
+        else if (w == "omega") t.omega = single_precision(cur.expect_float(w));
+        else if (w == "lambda") t.lambda = single_precision(cur.expect_float(w));
         else return false;
         return true;
     });
@@ -111,8 +111,10 @@ scene::PatternStep read_warp_step(ItemCursor& cur) {
 
 void read_warp(ItemCursor& cur, const BlockValue& block, scene::Pattern& pattern) {
     ItemCursor sub(cur.ctx(), block);
-    pattern.steps.steps.push_back(read_warp_step(sub));
-    mark_unsupported(pattern, "warp", block.loc);  // evaluated once the noise issue lands
+    scene::PatternStep step = read_warp_step(sub);
+    const bool rendered = std::holds_alternative<scene::warp::Turbulence>(step);
+    pattern.steps.steps.push_back(std::move(step));
+    if (!rendered) mark_unsupported(pattern, "warp", block.loc);  // the warps issue's
 }
 
 }  // namespace lumen::interp

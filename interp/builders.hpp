@@ -2,6 +2,7 @@
 // and the builders that turn flattened blocks into scene values (interp/build_*.cpp).
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "interp/value.hpp"
@@ -16,6 +17,10 @@ struct BuildContext {
     scene::PigmentPtr default_pigment;  // null = POV default (black)
     scene::FinishPtr default_finish;    // null = POV default finish
     scene::NormalPtr default_normal;    // null = none
+    // Shared by every pattern of the scene, filled in by finish_scene (scene/pattern.hpp).
+    std::shared_ptr<scene::PatternGlobals> pattern_globals =
+        std::make_shared<scene::PatternGlobals>();
+    bool noise_generator_given = false;  // global_settings { noise_generator } was read
     std::function<void(const Diagnostic&)> warn;  // may be empty
 };
 

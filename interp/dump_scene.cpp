@@ -418,7 +418,10 @@ Json fog(const scene::Fog& f) {
     put_if(o, "fog_type", double(f.type), double(d.type));
     put_if(o, "distance", f.distance, d.distance);
     put_if(o, "colour", f.colour, d.colour);
-    put_if(o, "turbulence", f.turbulence, d.turbulence);
+    put_if(o, "turbulence", f.turbulence.amount, d.turbulence.amount);
+    put_if(o, "octaves", double(f.turbulence.octaves), double(d.turbulence.octaves));
+    put_if(o, "omega", f.turbulence.omega, d.turbulence.omega);
+    put_if(o, "lambda", f.turbulence.lambda, d.turbulence.lambda);
     put_if(o, "turb_depth", f.turb_depth, d.turb_depth);
     put_if(o, "offset", f.offset, d.offset);
     put_if(o, "alt", f.alt, d.alt);

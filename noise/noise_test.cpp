@@ -2,6 +2,7 @@
 // at reference points, as computed by POV-Ray (double precision).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -86,6 +87,60 @@ TEST(Noise, MatchesPovAtReferencePoints) {
         EXPECT_NEAR(d.z, r.d.z, kTol);
         // DNoise's x is the unclamped generator-1 sum.
         EXPECT_NEAR(d.x + 0.5, r.gen1, kTol);
+    }
+}
+
+// POV's lattice noise written out term by term as POV orders it, to check the optimised
+// implementation bit for bit.
+struct Literal {
+    int ix, iy, iz;
+    double fx, fy, fz, sx, sy, sz, tx, ty, tz;
+    explicit Literal(const glm::dvec3& p) {
+        auto setup = [](double c, int& i, double& f, double& s, double& t) {
+            const int n = c >= 0 ? int(c) : int(c - (1 - 1e-10));
+            i = (n + 10000) & 4095;
+            f = c - n;
+            s = f * f * (3 - 2 * f);
+            t = 1 - s;
+        };
+        setup(p.x, ix, fx, sx, tx);
+        setup(p.y, iy, fy, sy, ty);
+        setup(p.z, iz, fz, sz, tz);
+    }
+    double corner(int a, int b, int c, int offset, double& weight) const {
+        const auto& H = detail::kHash;
+        const int h = (H[H[H[ix + a] ^ (iy + b)] ^ (iz + c)] & 255) + offset;
+        const double* v = detail::kRTable;
+        weight = ((a ? sx : tx) * (b ? sy : ty)) * (c ? sz : tz);
+        return 0.5 * v[h] + v[h + 1] * (fx - a) + v[h + 2] * (fy - b) + v[h + 3] * (fz - c);
+    }
+};
+
+TEST(Noise, OptimisedLoopsAreBitForBitPovsSums) {
+    const int noise_order[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                                   {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+    const int dnoise_order[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 1, 1}, {1, 1, 1}, {1, 0, 1}, {0, 0, 1}};
+    for (int i = 0; i < 5000; ++i) {
+        const glm::dvec3 p(std::sin(i * 0.7) * 40, i * 0.013 - 30, std::cos(i * 1.3) * 7);
+        const Literal l(p);
+        double sum = 0, w;
+        for (const auto& c : noise_order) {
+            const double t = l.corner(c[0], c[1], c[2], 0, w);
+            sum += w * t;
+        }
+        ASSERT_EQ(noise(p, Generator::Original), std::clamp(sum + 0.5, 0.0, 1.0)) << i;
+        ASSERT_EQ(noise(p, Generator::RangeCorrected),
+                  std::clamp((sum + 1.05242) * 0.48985582, 0.0, 1.0))
+            << i;
+        glm::dvec3 d(0);
+        for (const auto& c : dnoise_order) {
+            const double tx = l.corner(c[0], c[1], c[2], 0, w);
+            d.x += w * tx;
+            d.y += w * l.corner(c[0], c[1], c[2], 4, w);
+            d.z += w * l.corner(c[0], c[1], c[2], 8, w);
+        }
+        ASSERT_EQ(dnoise(p), d) << i;
     }
 }
 

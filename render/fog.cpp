@@ -30,9 +30,22 @@ double fog_width(const scene::Fog& fog, const Ray& ray, double depth) {
     return (integral(y1 + dy * depth) - integral(y1)) / dy;
 }
 
+// Fog turbulence thins the fog by the turbulence at the segment's midpoint (scaled
+// component-wise by the amount), less so the longer the segment: the width is multiplied by
+// 1 - e^(-depth/distance)·min(1, turb_depth·turbulence). Fitted to povray 3.7 renders of
+// constant and ground fog to 2e-5 (16-bit linear output), with several amounts, turb_depths,
+// distances, octaves/omega/lambda and generators; the fog's transform does not move it.
+double turbulence_factor(const scene::Fog& fog, const Ray& ray, double depth,
+                         noise::Generator generator) {
+    const glm::dvec3 p = (ray.origin + ray.dir * (depth * 0.5)) * fog.turbulence.amount;
+    const double t = noise::turbulence(p, fog.turbulence, generator);
+    return 1 - std::exp(-depth / fog.distance) * std::min(1.0, fog.turb_depth * t);
+}
+
 }  // namespace
 
-FogEffect fog_along(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth) {
+FogEffect fog_along(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth,
+                    noise::Generator generator) {
     // Every fog attenuates what is behind it and adds its own colour; the added colours are
     // summed without attenuating each other.
     FogEffect e;
@@ -40,7 +53,10 @@ FogEffect fog_along(const std::vector<scene::Fog>& fogs, const Ray& ray, double 
         if (std::fabs(fog.distance) <= 1e-10) continue;  // a zero distance means no fog
         const glm::dvec3 fc(fog.colour.r, fog.colour.g, fog.colour.b);
         // The fog's transmit is the least amount of the scene that shows through.
-        const double k = std::max(std::exp(-fog_width(fog, ray, depth) / fog.distance), fog.colour.t);
+        double width = fog_width(fog, ray, depth);
+        if (fog.turbulence.amount != glm::dvec3(0))
+            width *= turbulence_factor(fog, ray, depth, generator);
+        const double k = std::max(std::exp(-width / fog.distance), fog.colour.t);
         // Filter tints the light that passes; it does not change the colour the fog adds.
         const double f = fog.colour.f;
         e.attenuation *= k * ((1 - f) + f * fc);

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "noise/noise.hpp"
 #include "render/ray.hpp"
 #include "scene/scene.hpp"
 
@@ -18,7 +19,9 @@ struct FogEffect {
     double transmit = 1;        // multiplies the alpha channel's transmit
 };
 
-// Every fog of the scene over the segment [0, depth] of `ray`.
-FogEffect fog_along(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth);
+// Every fog of the scene over the segment [0, depth] of `ray`; fog turbulence uses the scene's
+// noise generator.
+FogEffect fog_along(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth,
+                    noise::Generator generator);
 
 }  // namespace lumen::render

@@ -61,9 +61,10 @@ float encode_value(float v, const Encoding& e) {
     return lin > 0 ? std::pow(lin, float(1.0 / e.file_gamma)) : lin;
 }
 
+// In single precision too, as POV: 0.9 * 255 rounds to 229.5 in float and so to level 230.
 double quantise(float encoded, int maxval) {
-    const double c = std::clamp(double(encoded), 0.0, 1.0);
-    return std::floor(c * maxval + 0.5);
+    const float c = std::clamp(encoded, 0.0f, 1.0f);
+    return std::floor(c * float(maxval) + 0.5f);
 }
 
 const char* extension(FileType type) {

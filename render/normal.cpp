@@ -106,7 +106,7 @@ void perturb(const scene::Normal& normal, glm::dvec3& n, const glm::dvec3& p) {
     const scene::Pattern& pattern = normal.pattern;
     if (pattern.is_plain()) return;
     n = to_pattern_normal(normal, n);
-    const glm::dvec3 tp = to_pattern_space(pattern, p);
+    const glm::dvec3 tp = pattern_point(pattern, p);
     std::visit(
         [&](const auto& kind) {
             using Kind = std::decay_t<decltype(kind)>;

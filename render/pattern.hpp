@@ -17,11 +17,12 @@ inline bool is_discrete(scene::PatternType type) { return scene::discrete_entrie
 // pattern space, computes the kind's raw value and applies frequency/phase and the wave type
 // (continuous patterns), so the result indexes a blend map directly.
 double pattern_value(const scene::Pattern& pattern, const glm::dvec3& world_point);
-
-// The two halves of pattern_value: a world point mapped into the pattern's space, and the
-// value at a point already there (a normal samples its pattern's slope around one warped
-// point, and POV does not warp the samples again).
-glm::dvec3 to_pattern_space(const scene::Pattern& pattern, const glm::dvec3& world_point);
+// The two halves of pattern_value: the point in the pattern's own space (through its
+// transforms and warps), and the value at such a point. A map's entries (pigment_map,
+// texture_map, normal_map and the list forms) are evaluated at their parent's pattern point,
+// as POV does: the parent's transforms and turbulence carry over to them. A normal samples
+// its pattern's slope around one pattern point, without warping the samples again.
+glm::dvec3 pattern_point(const scene::Pattern& pattern, const glm::dvec3& world_point);
 double pattern_value_at(const scene::Pattern& pattern, const glm::dvec3& pattern_point);
 
 // The colour map a pattern uses when the scene gives none.

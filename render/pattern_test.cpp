@@ -88,9 +88,31 @@ TEST(Pattern, BlendMapLookupRules) {
     EXPECT_EQ(lookup_colour_map(map, 0.0), rgb(1, 0, 0));      // below the first entry
     EXPECT_EQ(lookup_colour_map(map, 0.9), rgb(1, 1, 1));      // above the last
     EXPECT_EQ(lookup_colour_map(map, 0.5), rgb(0, 1, 0));      // exact match: first equal entry
-    EXPECT_NEAR(lookup_colour_map(map, 0.35).r, 0.5, 1e-12);   // linear blend
-    EXPECT_NEAR(lookup_colour_map(map, 0.65).b, 1.0, 1e-12);   // after the hard edge
-    EXPECT_NEAR(lookup_colour_map(map, 0.65).r, 0.5, 1e-12);
+    // Keys and colours are single precision, as in POV.
+    EXPECT_NEAR(lookup_colour_map(map, 0.35).r, 0.5, 1e-7);   // linear blend
+    EXPECT_NEAR(lookup_colour_map(map, 0.65).b, 1.0, 1e-7);   // after the hard edge
+    EXPECT_NEAR(lookup_colour_map(map, 0.65).r, 0.5, 1e-7);
+    // POV's blend: the difference and the sum in float, the weight from float keys.
+    const scene::ColourMap two = {{0.1, rgb(0.3, 0, 0)}, {0.7, rgb(0.9, 0, 0)}};
+    const double w = (0.4 - double(0.1f)) / (double(0.7f) - double(0.1f));
+    EXPECT_EQ(lookup_colour_map(two, 0.4).r, double(0.3f + float(w * double(0.9f - 0.3f))));
+    EXPECT_EQ(lookup_colour_map(two, 0.7).r, double(0.9f));
+}
+
+// A pigment_map entry is evaluated at its parent's pattern point: the parent's scale carries
+// over to the entry, which is not transformed itself.
+TEST(Pattern, MapEntriesAreEvaluatedAtTheParentsPatternPoint) {
+    auto child = std::make_shared<scene::Pigment>();
+    child->pattern.kind = scene::pattern::Gradient{{0, 1, 0}};
+    scene::Pigment parent;
+    parent.pattern.kind = scene::pattern::Checker{};
+    parent.pattern.steps.add_transform(
+        {glm::scale(glm::dmat4(1.0), glm::dvec3(4.0)), glm::scale(glm::dmat4(1.0), glm::dvec3(0.25))});
+    parent.pigment_map = {{0, child}, {1, child}};
+    // World y = 2 is the parent's y = 0.5: the child's gradient reads 0.5 there, not 0 (2 mod 1).
+    EXPECT_NEAR(evaluate_pigment(&parent, {0.5, 2, 0.5}).r, 0.5, 1e-7);
+    EXPECT_EQ(pattern_point(parent.pattern, {0.5, 2, 0.5}), glm::dvec3(0.125, 0.5, 0.125));
+    EXPECT_EQ(pattern_value_at(child->pattern, {0, 0.25, 0}), 0.25);
 }
 
 TEST(Pattern, DiscretePatternsIgnoreFrequency) {

@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "noise/noise.hpp"
 #include "render/interior_list.hpp"
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
@@ -34,6 +35,8 @@ struct LightingEnv {
     glm::dvec3 ambient_light{1};
     glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};  // global_settings irid_wavelength
     const std::vector<scene::Fog>* fogs = nullptr;  // dims lights with media_attenuation
+    // global_settings noise_generator: fog and irid turbulence.
+    noise::Generator noise_generator = noise::Generator::RangeCorrected;
     bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient
     int quality = 9;
 };
@@ -46,8 +49,12 @@ glm::dvec3 metallic_factor(double metallic, double cos_angle, const glm::dvec3& 
 // is multiplied before diffuse and highlights, 1 + amount·cos(2π·thickness·(|cosL| + |cosV|)/λ)
 // per channel, where cosL and cosV are the cosines of the light and view directions with
 // the normal and λ the channel's irid_wavelength.
-glm::dvec3 irid_factor(const scene::Finish& finish, const glm::dvec3& wavelength,
-                       double cos_light, double cos_view);
+glm::dvec3 irid_factor(const scene::Finish& finish, double thickness,
+                       const glm::dvec3& wavelength, double cos_light, double cos_view);
+// The film's thickness at world point p: irid turbulence t varies it by POV's turbulence T
+// (5 octaves, omega 0.5, lambda 2) to thickness·(1 + t·(2T − 1)).
+double irid_thickness(const scene::Finish& finish, const glm::dvec3& p,
+                      noise::Generator generator);
 
 // Ambient + emission + every light's diffuse and highlights (with shadows).
 glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,

@@ -54,19 +54,35 @@ TEST(Shading, IridFactorFollowsPovFilmModel) {
     f.irid_amount = 0.5;
     f.irid_thickness = 0.1;
     const glm::dvec3 wl(0.70, 0.52, 0.48);
-    const glm::dvec3 head_on = irid_factor(f, wl, 1.0, -1.0);
+    const glm::dvec3 head_on = irid_factor(f, f.irid_thickness, wl, 1.0, -1.0);
     EXPECT_NEAR(head_on.x, 0.888748, 2e-4);
     EXPECT_NEAR(head_on.y, 0.625740, 2e-4);
     EXPECT_NEAR(head_on.z, 0.566964, 2e-4);
-    const glm::dvec3 light_at_60 = irid_factor(f, wl, 0.5, -1.0);  // view head-on
+    // The view head-on.
+    const glm::dvec3 light_at_60 = irid_factor(f, f.irid_thickness, wl, 0.5, -1.0);
     EXPECT_NEAR(light_at_60.x, 1.111224, 2e-4);
     EXPECT_NEAR(light_at_60.y, 0.880384, 2e-4);
     EXPECT_NEAR(light_at_60.z, 0.808608, 2e-4);
     // The eye and light angles enter symmetrically; no film means no change.
-    const glm::dvec3 eye_at_60 = irid_factor(f, wl, 1.0, 0.5);
+    const glm::dvec3 eye_at_60 = irid_factor(f, f.irid_thickness, wl, 1.0, 0.5);
     EXPECT_NEAR(eye_at_60.y, light_at_60.y, 1e-12);
     f.irid_thickness = 0;
-    EXPECT_DOUBLE_EQ(irid_factor(f, wl, 0.3, 0.7).z, 1.5);
+    EXPECT_DOUBLE_EQ(irid_factor(f, f.irid_thickness, wl, 0.3, 0.7).z, 1.5);
+}
+
+TEST(Shading, IridTurbulenceVariesTheThicknessWithTheSceneGenerator) {
+    scene::Finish f;
+    f.irid_amount = 0.3;
+    f.irid_thickness = 0.5;
+    const glm::dvec3 p(1.3, -2.7, 0.37);
+    EXPECT_EQ(irid_thickness(f, p, noise::Generator::RangeCorrected), 0.5);
+    f.irid_turbulence = 0.6;
+    scene::TurbulenceParams five;
+    five.octaves = 5;
+    for (noise::Generator g : {noise::Generator::Original, noise::Generator::Perlin}) {
+        const double t = noise::turbulence(p, five, g);
+        EXPECT_DOUBLE_EQ(irid_thickness(f, p, g), 0.5 * (1 + 0.6 * (2 * t - 1)));
+    }
 }
 
 TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
@@ -89,7 +105,7 @@ TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     s.finish = &f;
     ThreadState state;
     const glm::dvec3 lit = local_light(s, env, InteriorList{}, state);
-    const glm::dvec3 k = irid_factor(f, env.irid_wavelength, 1.0, 1.0);
+    const glm::dvec3 k = irid_factor(f, f.irid_thickness, env.irid_wavelength, 1.0, 1.0);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], 0.2 + (0.25 + 0.3) * k[c], 1e-12);
 }
 

@@ -27,7 +27,7 @@ glm::dvec3 caustic_normal(const Hit& hit, const glm::dvec3& dir) {
     const scene::LayeredTexture* layers = facing_texture(hit, dir);
     if (!layers || layers->empty() || !layers->back()) return n;
     const ResolvedLayer top = resolve_layer(*layers->back(), hit.point);
-    return top.normal ? perturbed_normal(*top.normal, n, hit.point) : n;
+    return top.normal ? perturbed_normal(*top.normal, n, top.normal_point) : n;
 }
 
 }  // namespace

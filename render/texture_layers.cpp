@@ -18,7 +18,7 @@ const scene::Texture* top_layer(const scene::LayeredTexture& layers) {
 
 ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p) {
     const scene::Texture* t = top_layer(layers);
-    if (!t) return {scene::Colour{}, &default_finish(), nullptr};
+    if (!t) return {scene::Colour{}, &default_finish(), nullptr, p};
     return resolve_layer(*t, p);
 }
 
@@ -27,13 +27,14 @@ ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec
 ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p) {
     if (texture.pattern.is_plain() || texture.texture_map.empty()) {
         return {evaluate_pigment(texture.pigment.get(), p),
-                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get()};
+                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get(), p};
     }
-    const double v = pattern_value(texture.pattern, p);
-    const BlendWeights b = blend_weights(texture.texture_map, v);
-    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, p);
+    // The entries are evaluated at this pattern's point.
+    const glm::dvec3 tp = pattern_point(texture.pattern, p);
+    const BlendWeights b = blend_weights(texture.texture_map, pattern_value_at(texture.pattern, tp));
+    ResolvedLayer lo = resolve_entry(texture.texture_map[b.lower].item, tp);
     if (b.upper_weight == 0) return lo;
-    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, p);
+    ResolvedLayer hi = resolve_entry(texture.texture_map[b.upper].item, tp);
     ResolvedLayer out = b.upper_weight > 0.5 ? hi : lo;
     out.colour = mix(lo.colour, hi.colour, b.upper_weight);
     return out;
@@ -43,12 +44,12 @@ void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
                     ResolvedLayers& out) {
     out.clear();
     if (!layers || layers->empty()) {
-        out.add({scene::Colour{}, &default_finish(), nullptr});
+        out.add({scene::Colour{}, &default_finish(), nullptr, p});
         return;
     }
     for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it)
         out.add(*it ? resolve_layer(**it, p)
-                    : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr});
+                    : ResolvedLayer{scene::Colour{}, &default_finish(), nullptr, p});
 }
 
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p) {

@@ -16,6 +16,8 @@ struct ResolvedLayer {
     scene::Colour colour;
     const scene::Finish* finish;  // never null after resolve
     const scene::Normal* normal;  // null: no perturbation
+    glm::dvec3 normal_point;      // where the normal is evaluated (a texture_map's entries: at
+                                  // the map's pattern point)
 };
 
 const scene::Finish& default_finish();

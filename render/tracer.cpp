@@ -91,6 +91,7 @@ void Tracer::init(const std::vector<LightSource>& lights) {
     env_.ambient_light = scene.globals.ambient_light;
     env_.irid_wavelength = scene.globals.irid_wavelength;
     env_.fogs = &scene.fogs;
+    env_.noise_generator = noise::resolve_generator(0, scene.globals.noise_generator);
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
@@ -135,7 +136,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     if (find_hit(ray, ctx.kind, hit)) {
         *depth = hit.t;
         hit.texture = facing_texture(hit, ray.dir);
-        c = shade(ray, hit, here, state);
+        c = shade(ray, hit, hit.point, here, state);
     } else {
         c = sky(ray.dir);
     }
@@ -143,26 +144,28 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     return c;
 }
 
-RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
-                        ThreadState& state) const {
+RayColour Tracer::shade(const Ray& ray, const Hit& hit, const glm::dvec3& texture_point,
+                        const Context& ctx, ThreadState& state) const {
     const scene::LayeredTexture* texture = hit.texture;
-    if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, ctx, state);
-    // texture_map: shade both neighbouring entries and blend the results.
+    if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, texture_point, ctx, state);
+    // texture_map: shade both neighbouring entries, at the map's pattern point, and blend.
     const scene::Texture& t = *texture->front();
-    const BlendWeights b = blend_weights(t.texture_map, pattern_value(t.pattern, hit.point));
+    const glm::dvec3 tp = pattern_point(t.pattern, texture_point);
+    const BlendWeights b = blend_weights(t.texture_map, pattern_value_at(t.pattern, tp));
     auto entry = [&](int i, double w) {
         Context sub = ctx;
         sub.weight *= w;
         Hit h = hit;
         h.texture = &t.texture_map[i].item;
-        return shade(ray, h, sub, state);
+        return shade(ray, h, tp, sub, state);
     };
     if (b.upper_weight == 0) return entry(b.lower, 1.0);
     RayColour out;
     const double ws[2] = {1 - b.upper_weight, b.upper_weight};
     const int idx[2] = {b.lower, b.upper};
+    // Both entries are shaded however small a weight (POV does: a 0.4% entry shows in a dark
+    // pixel's sRGB level); only the rays they spawn obey adc_bailout.
     for (int k = 0; k < 2; ++k) {
-        if (ws[k] * ctx.weight < adc_bailout_) continue;
         const RayColour c = entry(idx[k], ws[k]);
         out.rgb += ws[k] * c.rgb;
         out.transmit += ws[k] * c.transmit;
@@ -171,13 +174,14 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const Context& ctx,
 }
 
 RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
-                               const Context& ctx, ThreadState& state) const {
+                               const glm::dvec3& texture_point, const Context& ctx,
+                               ThreadState& state) const {
     const glm::dvec3 d = ray.dir;
     glm::dvec3 raw_n = hit.normal;
     if (glm::dot(raw_n, d) > 0) raw_n = -raw_n;  // every surface is two-sided
 
     ResolvedLayers layers;
-    resolve_layers(texture, hit.point, layers);
+    resolve_layers(texture, texture_point, layers);
 
     const int quality = options_.quality;
     const bool double_illuminate = hit.double_illuminate;
@@ -208,8 +212,9 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.point = hit.point;
         s.view = d;
         // Each layer perturbs the surface normal on its own (POV applies normals from +Q8).
-        s.normal = layer.normal && quality >= 8 ? perturbed_normal(*layer.normal, raw_n, hit.point)
-                                                : raw_n;
+        s.normal = layer.normal && quality >= 8
+                       ? perturbed_normal(*layer.normal, raw_n, layer.normal_point)
+                       : raw_n;
         if (i == 0) top_normal = s.normal;
         s.raw_normal = raw_n;
         s.object = hit.object;
@@ -316,7 +321,7 @@ void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
                        const InteriorList& interiors) const {
     // No fog while the ray is inside a solid (non-hollow) object.
     if (scene_.fogs.empty() || interiors.in_solid()) return;
-    const FogEffect e = fog_along(scene_.fogs, ray, depth);
+    const FogEffect e = fog_along(scene_.fogs, ray, depth, env_.noise_generator);
     c.rgb = e.added + e.attenuation * c.rgb;
     c.transmit *= e.transmit;
 }

@@ -44,9 +44,13 @@ private:
 
     void init(const std::vector<LightSource>& lights);  // the settings both constructors share
     RayColour trace(const Ray& ray, const Context& ctx, ThreadState& state, double* depth) const;
-    RayColour shade(const Ray& ray, const Hit& hit, const Context& ctx, ThreadState& state) const;
+    // `texture_point` is where the texture is evaluated: the hit point, or within a
+    // texture_map's entry the map's pattern point.
+    RayColour shade(const Ray& ray, const Hit& hit, const glm::dvec3& texture_point,
+                    const Context& ctx, ThreadState& state) const;
     RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,
-                           const Context& ctx, ThreadState& state) const;
+                           const glm::dvec3& texture_point, const Context& ctx,
+                           ThreadState& state) const;
     RayColour sky(const glm::dvec3& dir) const;
     void apply_fog(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors) const;
     bool find_hit(const Ray& ray, RayKind kind, Hit& hit) const;

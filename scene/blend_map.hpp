@@ -21,15 +21,17 @@ struct BlendWeights {
     double upper_weight = 0;  // 0 -> all `lower`
 };
 
+// POV stores the entries' values in single precision: they are compared and blended as such.
 template <class T> BlendWeights blend_weights(const BlendMap<T>& map, double v) {
     const int n = int(map.size());
     if (n == 0) return {};
-    if (v >= map[n - 1].value) return {n - 1, n - 1, 0};
+    auto key = [&](int i) { return double(float(map[i].value)); };
+    if (v >= key(n - 1)) return {n - 1, n - 1, 0};
     int i = 0;
-    while (i < n && map[i].value < v) ++i;
-    if (i == 0 || map[i].value == v) return {i, i, 0};
-    const double span = map[i].value - map[i - 1].value;
-    const double w = span > 0 ? (v - map[i - 1].value) / span : 1.0;
+    while (i < n && key(i) < v) ++i;
+    if (i == 0 || key(i) == v) return {i, i, 0};
+    const double span = key(i) - key(i - 1);
+    const double w = span > 0 ? (v - key(i - 1)) / span : 1.0;
     return {i - 1, i, w};
 }
 

@@ -19,23 +19,19 @@ template <class Kind> struct NormalForm {
     static constexpr bool rendered = PatternTraits<Kind>::info.rendered;
 };
 
-// Dedicated forms. bumps and wrinkles need only POV's vector noise. dents (the scene's
-// noise_generator), ripples and waves (its number_of_waves) are written and measured exact
-// with POV's defaults, but those settings do not reach a pattern yet: they stay unsupported
-// until the noise patterns bring them (render/patterns/normal_forms.cpp).
-template <bool Rendered> struct DedicatedForm {
+// The dedicated forms (render/patterns/normal_forms.cpp).
+struct DedicatedForm {
     static constexpr bool dedicated = true;
-    static constexpr bool rendered = Rendered;
+    static constexpr bool rendered = true;
 };
-template <> struct NormalForm<pattern::Bumps> : DedicatedForm<true> {};
-template <> struct NormalForm<pattern::Wrinkles> : DedicatedForm<true> {};
-template <> struct NormalForm<pattern::Dents> : DedicatedForm<false> {};
-template <> struct NormalForm<pattern::Ripples> : DedicatedForm<false> {};
-template <> struct NormalForm<pattern::Waves> : DedicatedForm<false> {};
-
-template <> struct NormalForm<pattern::Quilted> : DedicatedForm<true> {};
-template <> struct NormalForm<pattern::Average> : DedicatedForm<true> {};  // its map, weighted
-template <> struct NormalForm<pattern::Facets> : DedicatedForm<true> {};
+template <> struct NormalForm<pattern::Bumps> : DedicatedForm {};
+template <> struct NormalForm<pattern::Dents> : DedicatedForm {};
+template <> struct NormalForm<pattern::Wrinkles> : DedicatedForm {};
+template <> struct NormalForm<pattern::Ripples> : DedicatedForm {};
+template <> struct NormalForm<pattern::Waves> : DedicatedForm {};
+template <> struct NormalForm<pattern::Quilted> : DedicatedForm {};
+template <> struct NormalForm<pattern::Facets> : DedicatedForm {};
+template <> struct NormalForm<pattern::Average> : DedicatedForm {};  // its map's normals, weighted
 
 namespace normal_form_detail {
 template <std::size_t... I>

@@ -48,12 +48,13 @@ struct Hexagon : NoFields {};
 struct Square : NoFields {};
 struct Triangular : NoFields {};
 
-// Noise-based patterns: read now, rendered once render's noise lands.
+// Noise-based patterns (render/patterns/noise_kinds.hpp).
 struct Agate {
     double agate_turb = 1.0;
     template <class Self, class F> static void fields(Self& s, F&& f) { f("agate_turb", s.agate_turb); }
 };
 struct Bozo : NoFields {};
+struct Cells : NoFields {};
 struct Bumps : NoFields {};
 struct Crackle {
     double metric = 2;
@@ -76,6 +77,13 @@ struct Spotted : NoFields {};
 struct Waves : NoFields {};
 struct Wood : NoFields {};
 struct Wrinkles : NoFields {};
+// `spiral1 N` / `spiral2 N`: N arms (POV truncates the number to an integer).
+struct Spiral {
+    int arms = 0;
+    template <class Self, class F> static void fields(Self& s, F&& f) { f("arms", s.arms); }
+};
+struct Spiral1 : Spiral {};
+struct Spiral2 : Spiral {};
 struct Quilted {
     double control0 = 1, control1 = 1;
     template <class Self, class F> static void fields(Self& s, F&& f) {
@@ -107,7 +115,6 @@ struct Fractal : Arguments {
 };
 struct Aoi : Arguments {};
 struct Average : Arguments {};
-struct Cells : Arguments {};
 struct Cubic : Arguments {};
 struct Julia : Fractal {};
 struct Mandel : Fractal {};
@@ -122,8 +129,6 @@ struct Pavement : Arguments {
     }
 };
 struct Slope : Arguments {};
-struct Spiral1 : Arguments {};
-struct Spiral2 : Arguments {};
 struct Tiling : Arguments {};
 struct Facets : Arguments {
     double coords = 0, size = 0.1, metric = 2;
@@ -166,31 +171,31 @@ struct DensityFile : Arguments {
     X(Hexagon, "hexagon", 3, hexagon, true)                     \
     X(Square, "square", 4, square, true)                        \
     X(Triangular, "triangular", 6, triangular, true)            \
-    X(Agate, "agate", 0, grey_ramp, false)                      \
-    X(Bozo, "bozo", 0, grey_ramp, false)                        \
-    X(Bumps, "bumps", 0, grey_ramp, false)                      \
-    X(Crackle, "crackle", 0, grey_ramp, false)                  \
-    X(Dents, "dents", 0, grey_ramp, false)                      \
-    X(Granite, "granite", 0, grey_ramp, false)                  \
+    X(Agate, "agate", 0, agate, true)                           \
+    X(Bozo, "bozo", 0, bozo, true)                              \
+    X(Bumps, "bumps", 0, grey_ramp, true)                       \
+    X(Crackle, "crackle", 0, grey_ramp, true)                   \
+    X(Dents, "dents", 0, grey_ramp, true)                       \
+    X(Granite, "granite", 0, grey_ramp, true)                   \
     X(Leopard, "leopard", 0, grey_ramp, false)                  \
-    X(Marble, "marble", 0, grey_ramp, false)                    \
-    X(Ripples, "ripples", 0, grey_ramp, false)                  \
-    X(Spotted, "spotted", 0, grey_ramp, false)                  \
-    X(Waves, "waves", 0, grey_ramp, false)                      \
-    X(Wood, "wood", 0, grey_ramp, false)                        \
-    X(Wrinkles, "wrinkles", 0, grey_ramp, false)                \
+    X(Marble, "marble", 0, marble, true)                        \
+    X(Ripples, "ripples", 0, grey_ramp, true)                   \
+    X(Spotted, "spotted", 0, grey_ramp, true)                   \
+    X(Waves, "waves", 0, grey_ramp, true)                       \
+    X(Wood, "wood", 0, wood, true)                              \
+    X(Wrinkles, "wrinkles", 0, grey_ramp, true)                 \
     X(Quilted, "quilted", 0, grey_ramp, false)                  \
     X(Aoi, "aoi", 0, grey_ramp, false)                          \
     X(Average, "average", 0, grey_ramp, false)                  \
-    X(Cells, "cells", 0, grey_ramp, false)                      \
+    X(Cells, "cells", 0, grey_ramp, true)                       \
     X(Cubic, "cubic", 0, grey_ramp, false)                      \
     X(Julia, "julia", 0, grey_ramp, false)                      \
     X(Mandel, "mandel", 0, grey_ramp, false)                    \
     X(Magnet, "magnet", 0, grey_ramp, false)                    \
     X(Pavement, "pavement", 0, grey_ramp, false)                \
     X(Slope, "slope", 0, grey_ramp, false)                      \
-    X(Spiral1, "spiral1", 0, grey_ramp, false)                  \
-    X(Spiral2, "spiral2", 0, grey_ramp, false)                  \
+    X(Spiral1, "spiral1", 0, grey_ramp, true)                   \
+    X(Spiral2, "spiral2", 0, grey_ramp, true)                   \
     X(Tiling, "tiling", 0, grey_ramp, false)                    \
     X(Facets, "facets", 0, grey_ramp, false)                    \
     X(Function, "function", 0, grey_ramp, false)                \

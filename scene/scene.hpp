@@ -47,7 +47,7 @@ struct Fog {
     int type = 1;                      // 1 constant, 2 ground fog
     double distance = 0;
     Colour colour;
-    glm::dvec3 turbulence{0};
+    TurbulenceParams turbulence;       // amount 0 = none
     double turb_depth = 0.5;
     double offset = 0, alt = 0;
     glm::dvec3 up{0, 1, 0};

@@ -42,7 +42,6 @@ struct Finish {
     bool fresnel = false;
     bool conserve_energy = false;
     double irid_amount = 0.0, irid_thickness = 0.0, irid_turbulence = 0.0;
-    std::optional<Unsupported> unsupported;  // irid turbulence: lumen has no noise yet
     std::optional<double> ior;       // obsolete finish{ior}: moved into the interior
     SourceLoc loc;
 };

@@ -6,19 +6,17 @@
 
 #include "noise/noise.hpp"
 #include "noise/waveforms.hpp"
+#include "render/patterns/noise_kinds.hpp"
 
 namespace lumen::render {
 namespace {
 
 const double kHalfDiagonal = std::sqrt(3.0) / 2;
 
-// The scene-wide noise settings a normal uses. POV's defaults until the scene's
-// noise_generator and number_of_waves reach patterns (with the noise patterns); dents,
-// ripples and waves are reported unsupported until then (scene/normal_forms.hpp).
-noise::Generator generator_of(const scene::Pattern& pattern) {
-    return noise::resolve_generator(pattern.noise_generator, 2);
+// global_settings { number_of_waves }, which ripples and waves share with their pigments.
+int wave_count(const scene::Pattern& pattern) {
+    return pattern.globals ? pattern.globals->number_of_waves : 10;
 }
-int wave_count(const scene::Pattern&) { return 10; }
 
 // The quilt's cross-section: a cubic Bezier curve from 0 to 1 with control points control0
 // and control1 (POV-Ray's manual: 0 and 0 give a straight slope, 1 and 1 an S curve).

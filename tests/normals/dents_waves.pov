@@ -1,6 +1,5 @@
 // dents (its magnitude from the generator), ripples and waves (POV's ten wave sources, the
-// frequency and phase inside the wave). Measured exact with POV's default noise_generator and
-// number_of_waves; rendered once those scene settings reach patterns.
+// frequency and phase inside the wave).
 #include "common.inc"
 Ball(0, 0, normal { dents 3 scale 0.2 })
 Ball(1, 0, normal { dents 4 scale 0.2 noise_generator 3 })

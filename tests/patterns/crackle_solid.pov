@@ -1,0 +1,8 @@
+// crackle solid: the noise at each cell's feature point
+#version 3.7;
+global_settings { assumed_gamma 1  }
+camera { orthographic location <0, 0, -10> direction z right 4*x up 3*y }
+plane { z, 0.37
+  pigment { crackle solid scale 0.3 }
+  finish { ambient 1 diffuse 0 }
+}

@@ -1,0 +1,8 @@
+// turbulence under global_settings { noise_generator 1 }
+#version 3.7;
+global_settings { assumed_gamma 1 noise_generator 1 }
+camera { orthographic location <0, 0, -10> direction z right 4*x up 3*y }
+plane { z, 0.37
+  pigment { marble turbulence 0.8 scale 0.5 }
+  finish { ambient 1 diffuse 0 }
+}

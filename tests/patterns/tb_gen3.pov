@@ -1,0 +1,8 @@
+// turbulence with noise_generator 3: the displacement keeps the original lattice
+#version 3.7;
+global_settings { assumed_gamma 1  }
+camera { orthographic location <0, 0, -10> direction z right 4*x up 3*y }
+plane { z, 0.37
+  pigment { bozo noise_generator 3 turbulence 0.5 scale 0.4 }
+  finish { ambient 1 diffuse 0 }
+}

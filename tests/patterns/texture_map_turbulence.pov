@@ -1,0 +1,13 @@
+// A texture_map's entries are evaluated at the parent's pattern point, and an entry weighing
+// less than adc_bailout still shows.
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -10> direction z right 4*x up 3*y }
+plane { z, 0.37
+  texture { gradient x
+    texture_map {
+      [0 pigment { checker rgb 0 rgb 1 scale 0.2 } finish { ambient 1 diffuse 0 }]
+      [1 pigment { rgb <1, 0, 0> } finish { ambient 1 diffuse 0 }]
+    }
+    turbulence 0.5 scale 2 }
+}

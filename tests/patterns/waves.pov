@@ -1,0 +1,8 @@
+// waves over global_settings { number_of_waves 4 }
+#version 3.7;
+global_settings { assumed_gamma 1 number_of_waves 4 }
+camera { orthographic location <0, 0, -10> direction z right 4*x up 3*y }
+plane { z, 0.37
+  pigment { waves scale 0.5 }
+  finish { ambient 1 diffuse 0 }
+}
