@@ -13,6 +13,7 @@ using BuildNormal = BuildTest;
 std::string normal_text(std::string_view keyword) {
     std::string body(keyword);
     if (keyword == "gradient") body += " y";
+    if (keyword == "spiral1" || keyword == "spiral2") body += " 2";
     if (keyword == "average") body += " normal_map { [1 gradient x] }";
     return "sphere { 0, 1 normal { " + body + " } }";
 }
