@@ -258,7 +258,14 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         }
 
         if (quality >= 8) {
-            const Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);
+            Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);
+            if (r.any() && layer.finish->irid_amount > 0) {
+                // POV's film tints the reflection too, the mirror direction as the light's.
+                const double cos_v = glm::dot(s.normal, d);
+                r.colour *= irid_factor(*layer.finish,
+                                        irid_thickness(*layer.finish, s.point, env_.noise_generator),
+                                        env_.irid_wavelength, cos_v, cos_v);
+            }
             if (i == 0) top_reflectivity = r.colour, top_reflects = r.any();
             if (r.any())
                 reflections[n_reflections++] = {r.colour * filter, s.normal,
@@ -313,6 +320,11 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         // passing through is faded, not the surface's own colour).
         if (hit.interior && ctx.interiors->find(hit.interior_id) >= 0)
             fade = interior_fade(*hit.interior, hit.t, false);
+        if (total_internal && top.irid_amount > 0) {
+            const double cos_v = glm::dot(top_normal, d);  // the film tints it as a reflection
+            t.rgb *= irid_factor(top, irid_thickness(top, hit.point, env_.noise_generator),
+                                 env_.irid_wavelength, cos_v, cos_v);
+        }
         out.rgb += total_internal ? fade * t.rgb : fade * t.rgb * f;
         out.transmit = grey(fade) * t.transmit * trans;
     }
