@@ -42,9 +42,11 @@ template <class T> Value make(const T& v, SourceLoc loc) {
 
 // Every Unsupported reachable from a texture / pigment / normal.
 void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out);
+void collect(const scene::ObjectPtr& o, std::vector<scene::Unsupported>& out);
 void collect(const scene::Pattern& p, std::vector<scene::Unsupported>& out) {
     if (p.unsupported) out.push_back(*p.unsupported);
     if (const auto* k = std::get_if<scene::pattern::PigmentPattern>(&p.kind)) collect(k->pigment, out);
+    if (const auto* k = std::get_if<scene::pattern::Object>(&p.kind)) collect(k->object, out);
 }
 void collect(const scene::PigmentPtr& p, std::vector<scene::Unsupported>& out) {
     if (!p) return;
@@ -84,6 +86,11 @@ void collect(const scene::ObjectPtr& o, std::vector<scene::Unsupported>& out) {
 
 bool is_supported_block(const std::string& keyword) {
     return contains(kBuilt, keyword) || contains(kData, keyword);
+}
+
+bool is_pattern_owner(const std::string& keyword) {
+    return keyword == "pigment" || keyword == "texture" || keyword == "normal" ||
+           keyword == "density";
 }
 
 const std::vector<std::string>& known_block_keywords() {

@@ -43,6 +43,13 @@ int pattern_list_size(scene::PatternType type);
 // True for the pattern words that may be followed by a list (`checker A, B`).
 bool is_list_pattern_word(const Item& item);
 bool is_pattern_word(const Item& item);  // checker, bozo, gradient, ...
+// The list entries of an object pattern, `object { OBJ A, B }`: a cursor over the block after
+// the object, for the owner's list reader; finish() rejects anything left over.
+struct ObjectEntries {
+    ObjectEntries(ItemCursor& cur, const BlockValue& block);
+    void finish();
+    ItemCursor entries;
+};
 const std::vector<std::string>& pattern_keywords();
 void mark_unsupported(scene::Pattern& pattern, const std::string& feature, SourceLoc loc);
 // The arguments after a pattern keyword (`gradient <v>`, `mandel 25`), read into its kind

@@ -68,7 +68,17 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
                 continue;
             }
         }
-        if (read_pattern_keyword(cur, item, n.pattern, "normal")) continue;
+        if (read_pattern_keyword(cur, item, n.pattern, "normal")) {
+            if (const BlockValue* b = block_of(item, "object")) {
+                ObjectEntries list(cur, *b);  // `object { OBJ normal { A }, normal { B } }`
+                scene::NormalMap entries;
+                for (int i = 0; i < 2 && list.entries.next_is<scene::NormalPtr>(); ++i)
+                    entries.push_back({double(i), list.entries.next().value.as<scene::NormalPtr>()});
+                list.finish();
+                if (!entries.empty()) set_normal_map(n, std::move(entries));
+            }
+            continue;
+        }
         cur.fail_unexpected(item, normal_keywords());
     }
     return std::make_shared<scene::Normal>(std::move(n));

@@ -82,6 +82,14 @@ void mark_unsupported(scene::Pattern& pattern, const std::string& feature, Sourc
 
 int pattern_list_size(PatternType type) { return scene::discrete_entries(type); }
 
+ObjectEntries::ObjectEntries(ItemCursor& cur, const BlockValue& block) : entries(cur.ctx(), block) {
+    entries.next();  // the object, read by read_pattern_keyword
+}
+
+void ObjectEntries::finish() {
+    if (!entries.at_end()) entries.fail_unexpected(entries.next(), {});
+}
+
 bool is_list_pattern_word(const Item& item) {
     if (item.kind != Item::Kind::Keyword) return false;
     const scene::PatternInfo* p = find_pattern(item.keyword);
@@ -140,14 +148,21 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
         mark_unsupported(pattern, kw.value.as<scene::Unsupported>().feature, kw.loc);
         return true;
     }
-    if (kw.kind == Item::Kind::Value && (kw.value.is<std::shared_ptr<const FunctionValue>>() ||
-                                         kw.value.is<scene::ObjectPtr>())) {
-        // function { } / object { } patterns
-        const bool object = kw.value.is<scene::ObjectPtr>();
-        pattern.kind = object ? scene::PatternKind{scene::pattern::Object{}}
-                              : scene::PatternKind{scene::pattern::Function{}};
-        mark_unsupported(pattern, std::string("pattern '") + (object ? "object" : "function") + "'",
-                         kw.loc);
+    if (const BlockValue* b = block_of(kw, "object")) {
+        // `object { OBJ list entries }`: the entries are read by the owner (object_entries).
+        ItemCursor sub(cur.ctx(), *b);
+        scene::pattern::Object k;
+        const scene::Unsupported* shape = sub.next_is<scene::Unsupported>()
+                                              ? &sub.next().value.as<scene::Unsupported>()
+                                              : nullptr;  // a shape lumen does not render
+        if (!shape) k.object = sub.expect<scene::ObjectPtr>("object", "an object");
+        set_kind(pattern, std::move(k), "object", owner, kw.loc);
+        if (shape) mark_unsupported(pattern, shape->feature, shape->loc);
+        return true;
+    }
+    if (kw.kind == Item::Kind::Value && kw.value.is<std::shared_ptr<const FunctionValue>>()) {
+        pattern.kind = scene::pattern::Function{};
+        mark_unsupported(pattern, "pattern 'function'", kw.loc);
         return true;
     }
     if (kw.kind != Item::Kind::Keyword) return false;

@@ -43,7 +43,7 @@ TEST_F(BuildPattern, DiscreteCountsAndListForms) {
     EXPECT_EQ(scene::discrete_entries(scene::PatternType::Triangular), 6);
     EXPECT_EQ(scene::discrete_entries(scene::PatternType::Gradient), 0);
     for (const scene::PatternInfo& row : scene::kPatternTable) {
-        if (row.entries == 0) continue;
+        if (row.entries == 0 || row.keyword == "object") continue;  // a block: below
         std::string list;
         for (int i = 0; i < row.entries; ++i) list += (i ? ", rgb " : " rgb ") + std::to_string(i);
         const scene::Texture t =
@@ -247,6 +247,38 @@ TEST_F(BuildPattern, UnbuiltBlocksMarkThePattern) {
     EXPECT_EQ(s.unsupported[0].feature, "image_map");
     EXPECT_EQ(s.unsupported[1].feature, "image_map");
     EXPECT_EQ(s.unsupported[1].loc.line, 3u);
+}
+
+// `object { OBJ A, B }` keeps the object and reads the list entries after it, in pigments,
+// textures and normals; the object's own unsupported features are reported.
+TEST_F(BuildPattern, ObjectPatternKeepsItsObjectAndEntries) {
+    const scene::Texture p = texture_of(
+        "sphere { 0, 1 pigment { object { box { -1, 1 } rgb 1, rgb <1, 0, 0> } scale 2 } }");
+    const auto* k = std::get_if<pattern::Object>(&p.pigment->pattern.kind);
+    ASSERT_NE(k, nullptr);
+    ASSERT_TRUE(k->object);
+    EXPECT_TRUE(std::holds_alternative<scene::Box>(k->object->shape));
+    ASSERT_EQ(p.pigment->colour_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(p.pigment->colour_map[1].item.g, 0);
+    EXPECT_FALSE(p.pigment->pattern.unsupported.has_value());
+
+    const scene::Texture t = texture_of(
+        "sphere { 0, 1 texture { object { sphere { 0, 1 } texture { pigment { rgb 1 } }, "
+        "texture { pigment { rgb 0 } } } } }");
+    EXPECT_EQ(t.texture_map.size(), 2u);
+    const scene::Texture n = texture_of(
+        "sphere { 0, 1 normal { object { sphere { 0, 1 } normal { bumps }, normal { dents } } } }");
+    EXPECT_EQ(n.normal->normal_map.size(), 2u);
+
+    const scene::Scene s = run("sphere { 0, 1 pigment { object { lathe { } } } }");
+    ASSERT_EQ(s.unsupported.size(), 1u);
+    EXPECT_EQ(s.unsupported[0].feature, "lathe");
+
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { object { 1 } } }").find("expected an object"),
+              std::string::npos);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { object { sphere { 0, 1 } rgb 1, rgb 0, rgb 1 } } }")
+                  .find("unexpected"),
+              std::string::npos);
 }
 
 // POV stores these in single precision; lumen rounds them the same way when it reads them.

@@ -98,6 +98,11 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
         }
         if (read_pattern_keyword(cur, item, p.pattern, "")) {
             if (is_list_pattern_word(item)) read_list_form(cur, p);
+            if (const BlockValue* b = block_of(item, "object")) {
+                ObjectEntries list(cur, *b);
+                read_list_form(list.entries, p);
+                list.finish();
+            }
             continue;
         }
         cur.fail_unexpected(item, pigment_keywords());

@@ -97,6 +97,11 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
         }
         if (read_pattern_keyword(cur, item, top.pattern, "")) {
             if (is_list_pattern_word(item)) read_list_form(cur, top);
+            if (const BlockValue* b = block_of(item, "object")) {
+                ObjectEntries list(cur, *b);
+                read_list_form(list.entries, top);
+                list.finish();
+            }
             continue;
         }
         cur.fail_unexpected(item, texture_keywords());

@@ -30,6 +30,9 @@ struct BuildContext {
 // supported give false: the evaluator then makes an Unsupported value without evaluating the
 // block's contents.
 bool is_supported_block(const std::string& keyword);
+// Blocks whose items may be a pattern (pigment, texture, normal, density): in them an
+// `object { }` is the object pattern.
+bool is_pattern_owner(const std::string& keyword);
 
 // All block keywords lumen knows (supported or not), for "did you mean" suggestions.
 const std::vector<std::string>& known_block_keywords();

@@ -147,6 +147,8 @@ private:
     int include_depth_ = 0;
     bool in_function_body_ = false;
     int breakable_ = 0;  // > 0 inside #switch/#while/#for/macro bodies: #break is allowed
+    std::vector<std::string> open_blocks_;     // keywords of the blocks being evaluated
+    const ast::Node* block_item_ = nullptr;    // the block being evaluated as a block's item
     std::vector<uint32_t> rand_streams_;  // seed() streams, indexed by the value seed() returns
     // Parsed trees stay alive for the whole run: MacroValue/FunctionValue point into them.
     std::vector<ast::NodePtr> trees_;

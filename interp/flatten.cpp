@@ -102,6 +102,7 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
         case Kind::Number: case Kind::String: case Kind::Ident: case Kind::Vector:
         case Kind::Unary: case Kind::Binary: case Kind::Ternary: case Kind::Member:
         case Kind::Index: case Kind::Colour: case Kind::ArrayDecl: case Kind::Block: {
+            if (node.kind == Kind::Block) block_item_ = &node;
             Value v = eval(node);
             out.push_back(value_item(std::move(v), node.loc));
             return Flow::Normal;
@@ -123,7 +124,18 @@ Value Evaluator::eval_block(const ast::Node& block) {
         throw LumenError(block.loc, "unknown keyword '" + kw + "'",
                          did_you_mean(kw, known_block_keywords()));
     }
+    // `object { }` written as an item of a pigment, texture, normal or density is the object
+    // pattern: its block is kept for the pattern to read (the object, then the list entries).
+    const bool object_pattern = kw == "object" && &block == block_item_ && !open_blocks_.empty() &&
+                                is_pattern_owner(open_blocks_.back());
+    block_item_ = nullptr;
+    open_blocks_.push_back(kw);
+    struct Close {
+        std::vector<std::string>& blocks;
+        ~Close() { blocks.pop_back(); }
+    } close{open_blocks_};
     BlockValue bv{kw, flatten_sealed(block.children), block.loc};
+    if (object_pattern) return Value{std::make_shared<const BlockValue>(std::move(bv)), block.loc};
     Value v = build_block(ctx, bv);
     if (v.loc.line == 0) v.loc = block.loc;
     return v;

@@ -20,6 +20,7 @@
 namespace lumen::scene {
 
 struct Pigment;  // scene/texture.hpp
+struct Object;   // scene/object.hpp
 
 namespace pattern {
 
@@ -194,7 +195,10 @@ struct Function : Arguments {};  // function { } pattern
 struct PigmentPattern : NoFields {
     std::shared_ptr<const Pigment> pigment;
 };
-struct Object : NoFields {};    // object { } pattern
+// `object { OBJ A, B }`: entry 1 inside the object (its own transforms applied), 0 outside.
+struct Object : NoFields {
+    std::shared_ptr<const scene::Object> object;
+};
 // The voxels of a df3 file, x fastest, then y, then z, scaled to [0, 1].
 struct DensityGrid {
     int nx = 0, ny = 0, nz = 0;
@@ -263,7 +267,7 @@ struct DensityFile {
     X(Facets, "facets", 0, grey_ramp, false)                    \
     X(Function, "function", 0, grey_ramp, false)                \
     X(PigmentPattern, "pigment_pattern", 0, grey_ramp, true)    \
-    X(Object, "object", 0, grey_ramp, false)                    \
+    X(Object, "object", 2, checker, true)                       \
     X(DensityFile, "density_file", 0, grey_ramp, true)
 
 #define LUMEN_PATTERN_ENUM(Kind, ...) Kind,

@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
+#include <unordered_map>
 
+#include "render/node.hpp"
 #include "render/pigment.hpp"
+#include "scene/object.hpp"
 
 namespace lumen::render {
 namespace {
@@ -78,6 +82,26 @@ double evaluate(const scene::pattern::DensityFile& k, const glm::dvec3& p) {
                     lerp(g.at(x.i, y.next, zi), g.at(x.next, y.next, zi), x.t), y.t);
     };
     return lerp(plane(z.i), plane(z.next), z.t);
+}
+
+// 1 inside the object, 0 outside (POV-Ray's Inside test, the object's own transforms, CSG and
+// clipped_by applied). Each thread compiles an object's nodes once; an entry whose object has
+// gone (a later frame reusing the address) is compiled again.
+double evaluate(const scene::pattern::Object& k, const glm::dvec3& p) {
+    if (!k.object) return 0;
+    struct Compiled {
+        std::weak_ptr<const scene::Object> source;
+        NodeStore store;
+        uint32_t root = 0;
+    };
+    thread_local std::unordered_map<const scene::Object*, Compiled> compiled;
+    Compiled& c = compiled[k.object.get()];
+    if (c.source.expired()) {
+        c.store = NodeStore{};
+        c.root = compile_object(c.store, *k.object, NodeContext{}, false);
+        c.source = k.object;
+    }
+    return inside_node(c.store, c.root, p) ? 1.0 : 0.0;
 }
 
 }  // namespace lumen::render

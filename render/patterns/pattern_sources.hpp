@@ -1,5 +1,5 @@
 // Patterns whose value comes from another scene element: pigment_pattern (a pigment's grey),
-// density_file (a df3 voxel grid), and average, whose entries the owning pigment or texture
+// density_file (a df3 voxel grid), object (inside an object or not), and average, whose entries the owning pigment or texture
 // evaluates itself.
 #pragma once
 #include <glm/vec3.hpp>
@@ -12,5 +12,6 @@ namespace lumen::render {
 double evaluate(const scene::pattern::Average&, const glm::dvec3& p);
 double evaluate(const scene::pattern::PigmentPattern& k, const glm::dvec3& p);
 double evaluate(const scene::pattern::DensityFile& k, const glm::dvec3& p);
+double evaluate(const scene::pattern::Object& k, const glm::dvec3& p);
 
 }  // namespace lumen::render
