@@ -1,6 +1,8 @@
 // camera { } with POV's fix-up order, so the renderer only maps
 // pixels to rays.
 #include <cmath>
+#include <iterator>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -13,9 +15,8 @@ namespace {
 const std::vector<std::string>& camera_keywords() {
     static const std::vector<std::string> k = [] {
         std::vector<std::string> v = transform_keywords();
-        for (const char* w : {"perspective", "orthographic", "fisheye", "ultra_wide_angle",
-                              "omnimax", "panoramic", "spherical", "cylinder", "mesh_camera",
-                              "location", "direction", "up", "right", "sky", "look_at", "angle",
+        v.insert(v.end(), std::begin(scene::kCameraKeywords), std::end(scene::kCameraKeywords));
+        for (const char* w : {"location", "direction", "up", "right", "sky", "look_at", "angle",
                               "focal_point", "aperture", "blur_samples", "confidence",
                               "variance", "normal"})
             v.push_back(w);
@@ -24,9 +25,15 @@ const std::vector<std::string>& camera_keywords() {
     return k;
 }
 
-bool is_other_camera_type(const std::string& w) {
-    return w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
-           w == "spherical" || w == "cylinder" || w == "mesh_camera";
+// The projection a keyword names (perspective, fisheye, cylinder, ...), if any.
+std::optional<scene::CameraType> camera_type(const std::string& w) {
+    for (size_t i = 0; i < std::size(scene::kCameraKeywords); ++i)
+        if (w == scene::kCameraKeywords[i]) return static_cast<scene::CameraType>(i);
+    return std::nullopt;
+}
+
+bool folds_angle(scene::CameraType t) {
+    return t == scene::CameraType::Perspective || t == scene::CameraType::Orthographic;
 }
 
 // Where the camera vectors were written (the camera block when they were not).
@@ -41,7 +48,7 @@ bool parallel(const glm::dvec3& a, const glm::dvec3& b) {
 // Step 6: the final direction, up and right must span space, or pixels cannot be mapped to
 // distinct rays (POV renders a black or smeared image; lumen reports the cause instead).
 void check_basis(ItemCursor& cur, const scene::Camera& cam, const VectorLocs& at) {
-    if (cam.type == scene::CameraType::Other) return;
+    if (cam.type == scene::CameraType::MeshCamera) return;
     for (const glm::dvec3& x : {cam.location, cam.direction, cam.up, cam.right})
         if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
             cur.fail(cam.loc, "camera vectors must be finite");
@@ -64,7 +71,7 @@ scene::Camera build_camera(ItemCursor& cur) {
     cam.loc = cur.block_loc();
     glm::dvec3 sky{0, 1, 0}, look_at{0, 0, 1};
     bool have_look_at = false, have_up = false, have_right = false;
-    std::optional<double> angle;
+    std::optional<double> angle, vertical_angle;
     SourceLoc angle_loc;
     VectorLocs at{cam.loc, cam.loc, cam.loc};
     scene::Transform transform;
@@ -79,22 +86,25 @@ scene::Camera build_camera(ItemCursor& cur) {
             continue;
         }
         if (item.kind == Item::Kind::Value && item.value.is<scene::NormalPtr>()) {
-            unsupported("camera normal", item.loc);
+            cam.normal = item.value.as<scene::NormalPtr>();
+            if (cam.normal->pattern.unsupported)
+                unsupported(cam.normal->pattern.unsupported->feature, cam.normal->pattern.unsupported->loc);
             continue;
         }
         if (item.kind == Item::Kind::Value && item.value.is<scene::Unsupported>()) {
-            cam.type = scene::CameraType::Other;  // mesh_camera { }
+            cam.type = scene::CameraType::MeshCamera;  // mesh_camera { }
             unsupported("camera '" + item.value.as<scene::Unsupported>().feature + "'", item.loc);
             continue;
         }
         if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, camera_keywords());
         const std::string& w = item.keyword;
-        if (w == "perspective") cam.type = scene::CameraType::Perspective;
-        else if (w == "orthographic") cam.type = scene::CameraType::Orthographic;
-        else if (is_other_camera_type(w)) {
-            cam.type = scene::CameraType::Other;
-            if (w == "cylinder") cur.expect_int(w);
-            unsupported("camera '" + w + "'", item.loc);
+        if (const std::optional<scene::CameraType> type = camera_type(w)) {
+            cam.type = *type;
+            if (w == "cylinder") {
+                const double n = cur.expect_float(w);  // truncated, as POV does
+                if (!(n >= 1 && n < 5)) cur.fail(item.loc, "cylinder camera type must be 1, 2, 3 or 4");
+                cam.cylinder_type = int(n);
+            }
         } else if (w == "location") cam.location = cur.expect_vector(w);
         else if (w == "direction") {
             cam.direction = cur.expect_vector(w);
@@ -113,7 +123,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         else if (w == "angle") {
             angle = cur.expect_float(w);
             angle_loc = item.loc;
-            cur.optional_float();  // vertical angle of spherical cameras
+            vertical_angle = cur.optional_float();  // spherical cameras
         }
         else if (w == "focal_point") cur.expect_vector(w);
         else if (w == "aperture") {
@@ -126,8 +136,17 @@ scene::Camera build_camera(ItemCursor& cur) {
     }
     if (!(glm::length(cam.direction) > 0))
         cur.fail(at.direction, "camera direction is a zero vector");
+    // The projections that keep their angle (measured defaults: 90, spherical 360 by 180).
+    if (cam.type == scene::CameraType::Spherical) {
+        cam.angle = angle.value_or(360);
+        cam.vertical_angle = vertical_angle.value_or(angle ? *angle / 2 : 180);
+    } else if (angle && !folds_angle(cam.type)) {
+        if (cam.type == scene::CameraType::Cylinder && *angle < 0)
+            cur.fail(angle_loc, "camera angle must not be negative");
+        cam.angle = *angle;
+    }
     // Step 2: angle is the full horizontal field of view along `right`.
-    if (angle && cam.type != scene::CameraType::Other) {
+    if (angle && folds_angle(cam.type)) {
         if (!(*angle > 0 && *angle < 180))
             cur.fail(angle_loc, "camera angle must be between 0 and 180 degrees");
         double half = *angle * M_PI / 360.0;

@@ -55,11 +55,26 @@ TEST_F(BuildCamera, TransformsAppliedLast) {
     expect_vec(c.direction, {1, 0, 0});
 }
 
-TEST_F(BuildCamera, OtherTypesAndFocalBlurUnsupported) {
-    scene::Scene s = run("camera { fisheye angle 180 }");
-    EXPECT_EQ(s.camera.type, scene::CameraType::Other);
-    ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "camera 'fisheye'");
+TEST_F(BuildCamera, ProjectionsKeepTheirAnglesAndFocalBlurIsUnsupported) {
+    scene::Scene s = run("camera { fisheye angle 200 }");
+    EXPECT_EQ(s.camera.type, scene::CameraType::Fisheye);
+    EXPECT_DOUBLE_EQ(s.camera.angle, 200);  // not folded into direction
+    EXPECT_NEAR(glm::length(s.camera.direction), 1, 1e-12);
+    EXPECT_TRUE(s.unsupported.empty());
+    EXPECT_DOUBLE_EQ(run("camera { ultra_wide_angle }").camera.angle, 90);
+    const scene::Camera sph = run("camera { spherical }").camera;
+    EXPECT_DOUBLE_EQ(sph.angle, 360);
+    EXPECT_DOUBLE_EQ(sph.vertical_angle, 180);
+    EXPECT_DOUBLE_EQ(run("camera { spherical angle 120 }").camera.vertical_angle, 60);
+    EXPECT_DOUBLE_EQ(run("camera { spherical angle 120, 30 }").camera.vertical_angle, 30);
+    const scene::Camera cyl = run("camera { cylinder 3.7 }").camera;
+    EXPECT_EQ(cyl.type, scene::CameraType::Cylinder);
+    EXPECT_EQ(cyl.cylinder_type, 3);  // truncated
+    EXPECT_NE(error_of("camera { cylinder 5 }").find("cylinder camera type must be 1, 2, 3 or 4"),
+              std::string::npos);
+    EXPECT_NE(error_of("camera { cylinder 1 angle -10 }").find("must not be negative"),
+              std::string::npos);
+    EXPECT_TRUE(run("camera { normal { bumps 0.5 } }").camera.normal);
     EXPECT_EQ(run("camera { aperture 0.5 focal_point 0 blur_samples 20 }").unsupported[0].feature,
               "focal blur");
 }

@@ -322,8 +322,11 @@ Json camera(const scene::Camera& c) {
     const scene::Camera d;
     Json o;
     if (c.loc.file || c.loc.line) o.put("loc", Json::str(loc_text(c.loc)));
-    static const char* types[] = {"perspective", "orthographic", "other"};
-    if (c.type != d.type) o.put("type", Json::str(types[static_cast<int>(c.type)]));
+    if (c.type != d.type) o.put("type", Json::str(scene::kCameraKeywords[static_cast<int>(c.type)]));
+    if (c.type == scene::CameraType::Cylinder) o.put("cylinder", Json::num(c.cylinder_type));
+    put_if(o, "angle", c.angle, d.angle);
+    if (c.type == scene::CameraType::Spherical) put_if(o, "vertical_angle", c.vertical_angle, d.vertical_angle);
+    if (c.normal) o.put("normal", Json::boolean(true));
     put_if(o, "location", c.location, d.location);
     put_if(o, "direction", c.direction, d.direction);
     put_if(o, "up", c.up, d.up);

@@ -63,7 +63,9 @@ Sample BlockRenderer::sample(double x, double y, ThreadState& state,
                              uint64_t& primary_rays) const {
     throw_if_stop_requested();  // SIGINT/SIGTERM: the render unwinds within a sample
     ++primary_rays;
-    const RayColour c = tracer_.trace_primary(camera_.ray(x, y), state);
+    const std::optional<Ray> ray = camera_.ray(x, y);
+    if (!ray) return {glm::dvec3(0), 1.0};  // no ray: black, fully transparent (POV)
+    const RayColour c = tracer_.trace_primary(*ray, state);
     return {c.rgb, c.transmit};
 }
 

@@ -1,6 +1,10 @@
 // Pixel -> primary ray (POV-Ray 3.7's rules). The scene camera arrives fixed up by the
 // interpreter (angle, look_at, orthographic scaling, transforms), so this is only the mapping.
 #pragma once
+#include <optional>
+
+#include <glm/vec3.hpp>
+
 #include "render/ray.hpp"
 #include "scene/camera.hpp"
 
@@ -13,12 +17,19 @@ public:
 
     // Ray through image position (x, y): x from the left, y from the top, in pixel units;
     // (x, y) is the pixel's centre before the half-pixel offset is added, so pixel (i, j)
-    // is sampled at ray(i, j) and anti-aliasing passes fractional positions.
-    Ray ray(double x, double y) const;
+    // is sampled at ray(i, j) and anti-aliasing passes fractional positions. None where the
+    // projection has no ray (outside a fisheye's or omnimax's circle): POV shows that sample
+    // as black, fully transparent, not as the background.
+    std::optional<Ray> ray(double x, double y) const;
 
 private:
-    glm::dvec3 location_, direction_, right_, up_;
-    bool orthographic_;
+    // The unnormalised direction (and, for the projections that move it, the origin) of the
+    // sample at (x, y), and the coordinates a camera normal is evaluated at.
+    bool project(double x, double y, Ray& ray, glm::dvec3& normal_point) const;
+
+    scene::Camera camera_;
+    glm::dvec3 right_unit_, up_unit_, direction_unit_;
+    double right_length_, up_length_;
     double width_, height_;
 };
 

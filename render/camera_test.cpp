@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "render/camera.hpp"
@@ -10,15 +12,15 @@ namespace {
 TEST(Camera, DefaultPerspectiveUsesHalfPixelOffsetAndFlipsY) {
     scene::Camera c;  // right 1.33, up 1, direction 1
     const CameraModel cam(c, 64, 48);
-    const Ray top_left = cam.ray(0, 0);
+    const Ray top_left = *cam.ray(0, 0);
     const glm::dvec3 expected =
         glm::normalize(glm::dvec3((0.5 / 64 - 0.5) * 1.33, 0.5 - 0.5 / 48, 1.0));
     EXPECT_NEAR(top_left.dir.x, expected.x, 1e-12);
     EXPECT_NEAR(top_left.dir.y, expected.y, 1e-12);
     EXPECT_GT(top_left.dir.y, 0);  // the top row looks up
-    EXPECT_NEAR(glm::length(cam.ray(17.3, 5.2).dir), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(cam.ray(17.3, 5.2)->dir), 1.0, 1e-12);
     // The centre of the image lies between pixels 31 and 32.
-    const Ray centre = cam.ray(31.5, 23.5);
+    const Ray centre = *cam.ray(31.5, 23.5);
     EXPECT_NEAR(centre.dir.x, 0, 1e-12);
     EXPECT_NEAR(centre.dir.y, 0, 1e-12);
 }
@@ -30,7 +32,7 @@ TEST(Camera, OrthographicMovesTheOriginNotTheDirection) {
     c.right = {4, 0, 0};
     c.up = {0, 3, 0};
     const CameraModel cam(c, 40, 30);
-    const Ray r = cam.ray(0, 0);
+    const Ray r = *cam.ray(0, 0);
     EXPECT_NEAR(r.origin.x, (0.5 / 40 - 0.5) * 4, 1e-12);
     EXPECT_NEAR(r.origin.y, (0.5 - 0.5 / 30) * 3, 1e-12);
     EXPECT_NEAR(r.dir.z, 1, 1e-12);
@@ -41,7 +43,80 @@ TEST(Camera, NegativeRightMirrorsTheImage) {
     scene::Camera c;
     c.right = {-1.33, 0, 0};
     const CameraModel cam(c, 10, 10);
-    EXPECT_GT(cam.ray(0, 5).dir.x, 0);
+    EXPECT_GT(cam.ray(0, 5)->dir.x, 0);
+}
+
+
+scene::Camera typed(scene::CameraType type) {
+    scene::Camera c;
+    c.type = type;
+    return c;
+}
+
+TEST(Camera, FisheyeHasNoRayOutsideItsCircle) {
+    scene::Camera c = typed(scene::CameraType::Fisheye);
+    c.right = {1.33, 0, 0};
+    const CameraModel cam(c, 64, 48);
+    EXPECT_FALSE(cam.ray(0, 0).has_value());  // the corner lies outside the circle
+    const Ray centre = *cam.ray(31.5, 23.5);
+    EXPECT_NEAR(centre.dir.z, 1, 1e-12);
+    // On the circle's rim the ray is angle/2 = 45 degrees off the axis.
+    const Ray top = *cam.ray(31.5, -0.5);
+    EXPECT_NEAR(std::acos(top.dir.z), M_PI / 4, 1e-9);
+}
+
+TEST(Camera, OmnimaxShowsNothingFarBelowTheHorizon) {
+    scene::Camera c = typed(scene::CameraType::Omnimax);
+    c.right = {1, 0, 0};  // square: the dome's y is not stretched
+    const CameraModel cam(c, 64, 64);
+    EXPECT_FALSE(cam.ray(31.5, 62).has_value());  // near the bottom of the dome
+    EXPECT_TRUE(cam.ray(31.5, 1).has_value());    // the top is seen
+}
+
+TEST(Camera, PanoramicPolesStayFinite) {
+    const CameraModel cam(typed(scene::CameraType::Panoramic), 40, 30);
+    const Ray pole = *cam.ray(10, -0.5);  // b = pi/2 exactly: tan clamped to 1e10
+    EXPECT_TRUE(std::isfinite(pole.dir.y));
+    EXPECT_NEAR(pole.dir.y, 1, 1e-9);
+}
+
+TEST(Camera, SphericalSpansItsAngles) {
+    scene::Camera c = typed(scene::CameraType::Spherical);
+    c.angle = 200;
+    c.vertical_angle = 60;
+    const CameraModel cam(c, 100, 50);
+    const Ray left = *cam.ray(-0.5, 24.5);  // the left edge: -100 degrees about up
+    EXPECT_NEAR(std::atan2(left.dir.x, left.dir.z), -100 * M_PI / 180, 1e-9);
+    const Ray top = *cam.ray(49.5, -0.5);  // the top edge: 30 degrees up
+    EXPECT_NEAR(std::asin(top.dir.y), 30 * M_PI / 180, 1e-9);
+}
+
+TEST(Camera, CylinderTypesThreeAndFourMoveTheOrigin) {
+    for (int type = 1; type <= 4; ++type) {
+        scene::Camera c = typed(scene::CameraType::Cylinder);
+        c.cylinder_type = type;
+        c.up = {0, 2, 0};
+        const CameraModel cam(c, 40, 30);
+        const Ray corner = *cam.ray(0, 0);
+        const bool moves = type >= 3;
+        EXPECT_EQ(glm::length(corner.origin) > 0, moves) << type;
+        if (type == 3) {
+            EXPECT_NEAR(corner.origin.y, (0.5 - 0.5 / 30) * 2, 1e-12);
+        }
+    }
+}
+
+// No projection hands out a NaN direction, even for positions off the image.
+TEST(Camera, EveryProjectionGivesUnitFiniteRays) {
+    for (int t = 0; t <= int(scene::CameraType::Cylinder); ++t) {
+        const CameraModel cam(typed(scene::CameraType(t)), 16, 12);
+        for (double y = -3; y <= 15; y += 0.75)
+            for (double x = -3; x <= 19; x += 0.75)
+                if (const auto r = cam.ray(x, y)) {
+                    ASSERT_TRUE(std::isfinite(r->dir.x + r->dir.y + r->dir.z)) << t;
+                    EXPECT_NEAR(glm::length(r->dir), 1, 1e-9) << t;
+                }
+    }
 }
 
 }  // namespace

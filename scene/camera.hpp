@@ -1,6 +1,7 @@
 // The camera after POV's fix-ups (angle, look_at, orthographic scaling, transforms), so the
 // renderer only maps pixels to rays (POV-Ray 3.7's rules).
 #pragma once
+#include <memory>
 #include <optional>
 #include <glm/vec3.hpp>
 
@@ -8,7 +9,27 @@
 
 namespace lumen::scene {
 
-enum class CameraType { Perspective, Orthographic, Other };
+struct Normal;  // scene/texture.hpp
+
+// X(Type, keyword): the projections, in the order the dump names them.
+#define LUMEN_CAMERA_TYPES(X)                \
+    X(Perspective, "perspective")            \
+    X(Orthographic, "orthographic")          \
+    X(Fisheye, "fisheye")                    \
+    X(UltraWideAngle, "ultra_wide_angle")    \
+    X(Omnimax, "omnimax")                    \
+    X(Panoramic, "panoramic")                \
+    X(Spherical, "spherical")                \
+    X(Cylinder, "cylinder")                  \
+    X(MeshCamera, "mesh_camera")
+
+#define LUMEN_CAMERA_ENUM(T, keyword) T,
+enum class CameraType { LUMEN_CAMERA_TYPES(LUMEN_CAMERA_ENUM) };
+#undef LUMEN_CAMERA_ENUM
+
+#define LUMEN_CAMERA_KEYWORD(T, keyword) keyword,
+inline constexpr const char* kCameraKeywords[] = {LUMEN_CAMERA_TYPES(LUMEN_CAMERA_KEYWORD)};
+#undef LUMEN_CAMERA_KEYWORD
 
 struct Camera {
     CameraType type = CameraType::Perspective;
@@ -16,7 +37,16 @@ struct Camera {
     glm::dvec3 direction{0, 0, 1};
     glm::dvec3 up{0, 1, 0};
     glm::dvec3 right{1.33, 0, 0};
-    std::optional<Unsupported> unsupported;  // e.g. fisheye, focal blur
+    // The field in degrees of the projections that take one (fisheye, ultra_wide_angle,
+    // cylinder: default 90; spherical: horizontal 360 and vertical 180, half the horizontal
+    // when only that is given). Perspective and orthographic fold `angle` into direction.
+    double angle = 90;
+    double vertical_angle = 180;
+    int cylinder_type = 1;  // 1..4
+    // `normal { }`: perturbs each ray's direction, evaluated at the projection's own
+    // coordinates of the sample.
+    std::shared_ptr<const Normal> normal;
+    std::optional<Unsupported> unsupported;  // e.g. mesh_camera, focal blur
     SourceLoc loc;
 };
 

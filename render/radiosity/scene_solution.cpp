@@ -114,7 +114,9 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
     std::vector<char> seen(mesh.unknowns(), 0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const Ray ray = camera.ray(x, y);
+            const std::optional<Ray> sample = camera.ray(x, y);
+            if (!sample) continue;
+            const Ray& ray = *sample;
             Hit hit;
             if (!geometry.intersect(ray, kMinDepth, std::numeric_limits<double>::infinity(), hit,
                                     Query::All))
