@@ -1,6 +1,11 @@
-// FreeType gives the outlines (FT_LOAD_NO_SCALE: the points in font units, exactly as the
-// glyf table stores them) and the kerning; the horizontal metrics and the glyph header boxes,
-// which POV-Ray reads from the tables directly, come from the raw hmtx, loca and glyf tables.
+// FreeType gives the outlines (FT_LOAD_NO_SCALE: the points in font units, unhinted) and the
+// kerning; the horizontal metrics and the glyph header boxes, which POV-Ray reads from the
+// tables directly, come from the raw hmtx, loca and glyf tables. FreeType moves a glyph's
+// outline by its left bearing less its xMin (so that the origin is where hmtx puts it), which
+// POV-Ray does not: that shift is undone, giving the points as the glyf table stores them.
+// POV-Ray's xMin is the header's xMin or the least x of the points (control points
+// included) where that is less: timrom.ttf's '*' has 70 in its header and a control point at
+// 66, where POV-Ray places it at 66, and its '@' has 60 and 61, placed at 60.
 #include "interp/ttf_font.hpp"
 
 #include <algorithm>
@@ -38,7 +43,10 @@ unsigned long u32(const std::vector<unsigned char>& t, size_t at) {
 struct TtfFont::Impl {
     FT_Library library = nullptr;
     FT_Face face = nullptr;
-    double per_unit = 1;  // 1 / unitsPerEm
+    // unitsPerEm. Font units are divided by it, as POV-Ray does: multiplying by its inverse
+    // rounds differently, and the glyph solver's tests of tiny coefficients see the difference.
+    double em = 1;
+    double ems(double font_units) const { return font_units / em; }
     bool long_loca = false;
     unsigned h_metrics = 0;  // hhea.numberOfHMetrics
     std::vector<unsigned char> hmtx, loca;
@@ -58,8 +66,8 @@ struct TtfFont::Impl {
         return nullptr;
     }
 
-    // The glyph header's xMin, from loca and glyf; 0 for a glyph without data.
-    double x_min(unsigned index) const {
+    // The glyph header's xMin in font units, from loca and glyf; 0 for a glyph without data.
+    int header_x_min(unsigned index) const {
         unsigned long from, to;
         if (long_loca) {
             from = u32(loca, 4 * size_t(index));
@@ -72,7 +80,7 @@ struct TtfFont::Impl {
         unsigned char header[4];
         FT_ULong length = sizeof header;
         if (FT_Load_Sfnt_Table(face, TTAG_glyf, from, header, &length) != 0) return 0;
-        return int16_t(header[2] << 8 | header[3]) * per_unit;
+        return int16_t(header[2] << 8 | header[3]);
     }
 };
 
@@ -85,7 +93,7 @@ TtfFont::TtfFont(const std::string& path) : impl_(std::make_unique<Impl>()) {
     const auto* hhea = static_cast<const TT_HoriHeader*>(FT_Get_Sfnt_Table(f.face, FT_SFNT_HHEA));
     if (!head || !hhea || head->Units_Per_EM == 0 || !FT_IS_SFNT(f.face))
         throw std::runtime_error("not a TrueType font");
-    f.per_unit = 1.0 / head->Units_Per_EM;
+    f.em = head->Units_Per_EM;
     f.long_loca = head->Index_To_Loc_Format != 0;
     f.h_metrics = hhea->number_Of_HMetrics;
     f.hmtx = raw_table(f.face, TTAG_hmtx);
@@ -111,21 +119,26 @@ FontGlyph TtfFont::glyph(unsigned index) const {
     const Impl& f = *impl_;
     FontGlyph g;
     const unsigned metric = std::min(index, f.h_metrics - 1);
-    g.advance = u16(f.hmtx, 4 * size_t(metric)) * f.per_unit;
-    g.left_bearing = (index < f.h_metrics ? s16(f.hmtx, 4 * size_t(index) + 2)
-                                          : s16(f.hmtx, 4 * size_t(f.h_metrics) +
-                                                            2 * size_t(index - f.h_metrics))) *
-                     f.per_unit;
-    g.x_min = f.x_min(index);
+    const int lsb = index < f.h_metrics
+                        ? s16(f.hmtx, 4 * size_t(index) + 2)
+                        : s16(f.hmtx, 4 * size_t(f.h_metrics) + 2 * size_t(index - f.h_metrics));
+    const int header_x_min = f.header_x_min(index);
+    const int shift = header_x_min - lsb;  // undoes FreeType's
+    g.advance = f.ems(u16(f.hmtx, 4 * size_t(metric)));
+    g.left_bearing = f.ems(lsb);
     if (FT_Load_Glyph(f.face, index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
         return g;  // unreadable glyph data: a blank glyph
     const FT_Outline& outline = f.face->glyph->outline;
     if (f.face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) return g;
+    long x_min = header_x_min;
     for (int i = 0; i < outline.n_points; ++i) {
         const FT_Vector& v = outline.points[i];
-        g.points.push_back({{v.x * f.per_unit, v.y * f.per_unit},
+        const long x = v.x + shift;
+        x_min = std::min(x_min, x);
+        g.points.push_back({{f.ems(double(x)), f.ems(double(v.y))},
                             FT_CURVE_TAG(outline.tags[i]) == FT_CURVE_TAG_ON});
     }
+    g.x_min = f.ems(double(x_min));
     for (int c = 0; c < outline.n_contours; ++c) g.contour_ends.push_back(outline.contours[c] + 1);
     return g;
 }
@@ -135,7 +148,7 @@ double TtfFont::kerning(unsigned left, unsigned right) const {
     if (!FT_HAS_KERNING(impl_->face) ||
         FT_Get_Kerning(impl_->face, left, right, FT_KERNING_UNSCALED, &k) != 0)
         return 0;
-    return std::max(k.x * impl_->per_unit, -1.0);
+    return std::max(impl_->ems(double(k.x)), -1.0);
 }
 
 }  // namespace lumen::interp

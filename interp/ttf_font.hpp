@@ -16,7 +16,7 @@ struct FontGlyph {
     std::vector<int> contour_ends;           // one past each contour's last point
     double advance = 0;                      // hmtx advance width
     double left_bearing = 0;                 // hmtx left side bearing
-    double x_min = 0;                        // the glyph header's xMin (0 for a blank glyph)
+    double x_min = 0;  // the header's xMin or the least x of the points if less (0: blank)
 };
 
 class TtfFont {

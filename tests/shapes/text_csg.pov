@@ -5,7 +5,7 @@ difference {
   box { <-0.2, -0.2, 0> <2.2, 0.9, 0.3> }
   text { ttf "timrom.ttf" "CUT" 0.6, 0 scale 0.9 translate <0.1, 0, -0.1> }
   pigment { rgb <0.9, 0.6, 0.3> }
-  rotate <0, -20, 0> translate <-0.4, 0.8, 0>
+  rotate <0, -20, 0> translate <0, 0.8, 0>
 }
 intersection {
   text { ttf "cyrvetic.ttf" "Q@" 1, 0 scale 1.2 }

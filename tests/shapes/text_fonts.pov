@@ -2,7 +2,7 @@
 // show, and a text seen edge-on along its extrusion.
 #include "text_common.inc"
 text { ttf "cyrvetic.ttf" "OB8e" 0.4, 0 pigment { rgb <1, 0.8, 0.2> }
-  rotate <0, -25, 0> translate <-0.6, 0.9, 0.3> }
+  rotate <0, -25, 0> translate <-0.2, 0.9, 0.3> }
 text { ttf "crystal.ttf" "Glass" 0.25, 0 pigment { rgb <0.6, 0.9, 1> } finish { specular 0.5 }
   scale 0.8 rotate <20, 15, 0> translate <1.5, -0.2, -0.6> }
 text { ttf "povlogo.ttf" "P" 0.5, 0 pigment { rgb <0.8, 0.2, 0.9> }
