@@ -193,7 +193,11 @@ void hit_glyph(const PreparedGlyph& g, double thickness, const glm::dvec3& P,
         auto line = [&](const glm::dvec2& v) { return D.y * v.x - D.x * v.y; };
         double s[2];
         const int n = glyph_roots(line(k.k2), line(k.k1), line(k.k0) + P.y * D.x - P.x * D.y, s);
-        for (int i = 0; i < n; ++i) wall(ray_t(k.at(s[i])), k.tangent(s[i]), e.outward);
+        for (int i = 0; i < n; ++i) {
+            glm::dvec2 tangent = k.tangent(s[i]);
+            if (tangent == glm::dvec2(0)) tangent = e.b - e.a;  // a cusp: the chord's normal
+            wall(ray_t(k.at(s[i])), tangent, e.outward);
+        }
     }
 }
 
