@@ -100,6 +100,7 @@ scene::ObjectPtr build_object(ItemCursor& cur);  // any shape keyword, CSG or `o
 scene::ObjectPtr build_csg(ItemCursor& cur);
 scene::ObjectPtr build_mesh(ItemCursor& cur);   // build_mesh.cpp
 scene::ObjectPtr build_mesh2(ItemCursor& cur);
+scene::ObjectPtr build_text(ItemCursor& cur);   // build_text.cpp
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
 bool is_unsupported_shape(const std::string& keyword);
 // Reads the object modifiers that follow a shape's own arguments. `extra` handles

@@ -96,9 +96,10 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& g) {
                                              std::to_string(noise::kMaxWaves), item.loc});
         }
         else if (w == "charset") {
-            if (!cur.accept_keyword("ascii") && !cur.accept_keyword("utf8") &&
-                !cur.accept_keyword("sys"))
-                cur.fail_expected("ascii, utf8 or sys", w);
+            if (cur.accept_keyword("ascii")) cur.ctx().utf8_strings = false;
+            else if (cur.accept_keyword("utf8") || cur.accept_keyword("sys"))
+                cur.ctx().utf8_strings = true;
+            else cur.fail_expected("ascii, utf8 or sys", w);
         } else if (w == "hf_gray_16") cur.optional_bool();
         else if (w == "max_intersections") cur.expect_float(w);
         else if (w == "mm_per_unit") {

@@ -165,6 +165,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Mesh>, ItemCursor& cur
     return cur.what() == "mesh" ? build_mesh(cur) : build_mesh2(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::Text>, ItemCursor& cur) {
+    return build_text(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -22,6 +22,9 @@ struct BuildContext {
     std::shared_ptr<scene::PatternGlobals> pattern_globals =
         std::make_shared<scene::PatternGlobals>();
     bool noise_generator_given = false;  // global_settings { noise_generator } was read
+    // global_settings { charset utf8 | sys }: strings read later are UTF-8. POV-Ray 3.7's
+    // default is ascii, whatever the #version.
+    bool utf8_strings = false;
     std::function<void(const Diagnostic&)> warn;  // may be empty
     SearchPath search_path;  // where the files a scene names are looked for (density files)
 };

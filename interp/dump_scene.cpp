@@ -276,6 +276,23 @@ struct ShapeDumper {
         put_nonempty(o, "textures", ts);
         if (m.inside_vector) o.put("inside_vector", vec(*m.inside_vector));
     }
+    // The font as found, the string, and where each glyph went with its outline's size.
+    void operator()(const scene::Text& t) const {
+        o.put("type", Json::str("text"));
+        o.put("font", Json::str(t.font));
+        o.put("string", Json::str(t.string));
+        o.put("thickness", Json::num(t.thickness));
+        o.put("offset", vec(t.offset));
+        Json gs = Json::array();
+        for (const auto& g : t.glyphs) {
+            Json glyph;
+            glyph.put("position", vec(g.position));
+            glyph.put("points", Json::num(double(g.points.size())));
+            glyph.put("contours", Json::num(double(g.contour_ends.size())));
+            gs.push(glyph);
+        }
+        o.put("glyphs", gs);
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

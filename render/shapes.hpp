@@ -8,5 +8,6 @@
 #include "render/shapes/plane.hpp"
 #include "render/shapes/polygon.hpp"
 #include "render/shapes/sphere.hpp"
+#include "render/shapes/text.hpp"
 #include "render/shapes/torus.hpp"
 #include "render/shapes/triangle.hpp"

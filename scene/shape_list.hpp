@@ -23,7 +23,8 @@
     X(Disc, "disc")                            \
     X(Triangle, "triangle", "smooth_triangle") \
     X(Polygon, "polygon")                      \
-    X(Mesh, "mesh", "mesh2")
+    X(Mesh, "mesh", "mesh2")                   \
+    X(Text, "text")
 
 namespace lumen::scene {
 
@@ -51,7 +52,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
     "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal",
     "lathe", "lemon", "light_group", "ovus", "parametric", "poly", "polynomial", "prism",
-    "quadric", "quartic", "sor", "sphere_sweep", "superellipsoid", "text"};
+    "quadric", "quartic", "sor", "sphere_sweep", "superellipsoid"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

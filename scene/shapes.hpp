@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -82,6 +83,32 @@ struct Mesh {
     LUMEN_FIELDS(f("vertices", s.vertices), f("normals", s.normals), f("uvs", s.uvs),
                  f("faces", s.faces), f("textures", s.textures),
                  f("inside_vector", s.inside_vector))
+};
+
+// text { ttf "font" "string" thickness, offset }: the glyphs of the string as read from the
+// TrueType font and laid out, in em units (1 em = the font's unitsPerEm), extruded from z = 0
+// to z = thickness. The points are the font's quadratic outline points as stored, with their
+// on-curve flags: the renderer walks them as TrueType does (implied midpoints included).
+struct Text {
+    struct Point {
+        glm::dvec2 p{0};
+        bool on_curve = true;
+        LUMEN_FIELDS(f("p", s.p), f("on_curve", s.on_curve))
+    };
+    struct Glyph {
+        glm::dvec3 position{0};         // where the glyph's origin is placed
+        std::vector<Point> points;      // all contours, each in the font's order
+        std::vector<int> contour_ends;  // one past the last point of each contour
+        LUMEN_FIELDS(f("position", s.position), f("points", s.points),
+                     f("contour_ends", s.contour_ends))
+    };
+    std::string font;    // the font file as found
+    std::string string;  // as written (for the dump)
+    double thickness = 1;
+    glm::dvec3 offset{0};
+    std::vector<Glyph> glyphs;  // one per character, including blank ones
+    LUMEN_FIELDS(f("font", s.font), f("string", s.string), f("thickness", s.thickness),
+                 f("offset", s.offset), f("glyphs", s.glyphs))
 };
 
 #undef LUMEN_FIELDS

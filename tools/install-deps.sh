@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
     tao-pegtl-dev libglm-dev libpng-dev libopenimageio-dev openimageio-tools libgtest-dev
+    libfreetype-dev  # text: TrueType fonts
     cmake g++ make pkg-config
     povray povray-includes povray-examples
     clang libclang-rt-14-dev

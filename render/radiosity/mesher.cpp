@@ -262,6 +262,8 @@ struct ShapeMesher {
     void operator()(const scene::Triangle& s) const { b.polygon({s.p[0], s.p[1], s.p[2]}); }
     void operator()(const scene::Polygon& s) const { mesh_polygon(s, b); }
     void operator()(const scene::Mesh& s) const { mesh_faces(s, b); }
+    // Glyph outlines are not meshed: text only occludes.
+    NotMeshed operator()(const scene::Text&) const { return {}; }
     // Unions are meshed through by the caller; other CSG only occludes.
     NotMeshed operator()(const scene::Csg&) const { return {}; }
     NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }

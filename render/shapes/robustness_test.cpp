@@ -300,5 +300,95 @@ TEST(Polygon, TiltedConcave) {
     EXPECT_TRUE(trace(g, ray({-0.5, 0.75, -1}, {1, 0, 1})));   // upright (x = 0.75)
 }
 
+// A glyph like 'O': a 1x1 square with a square hole, wound as TrueType winds outlines (outer
+// clockwise, hole counter-clockwise), beside a blank glyph, extruded 0.5 deep.
+scene::Text square_o() {
+    scene::Text t;
+    t.thickness = 0.5;
+    scene::Text::Glyph o;
+    o.points = {{{0, 0}, true},     {{0, 1}, true},     {{1, 1}, true},     {{1, 0}, true},
+                {{0.25, 0.25}, true}, {{0.75, 0.25}, true}, {{0.75, 0.75}, true},
+                {{0.25, 0.75}, true}};
+    o.contour_ends = {4, 8};
+    scene::Text::Glyph blank;
+    blank.position = {2, 0, 0};
+    t.glyphs = {o, blank};
+    return t;
+}
+
+TEST(Text, FacesWallsAndTheHole) {
+    Geometry g(scene_of({make(square_o())}));
+    auto front = trace(g, ray({0.1, 0.5, -1}, {0, 0, 1}));
+    ASSERT_TRUE(front);
+    EXPECT_NEAR(front->t, 1, 1e-12);
+    EXPECT_NEAR(front->normal.z, -1, 1e-12);
+    auto back = trace(g, ray({0.1, 0.5, 2}, {0, 0, -1}));
+    ASSERT_TRUE(back);
+    EXPECT_NEAR(back->t, 1.5, 1e-12);
+    EXPECT_NEAR(back->normal.z, 1, 1e-12);
+    EXPECT_FALSE(trace(g, ray({0.5, 0.5, -1}, {0, 0, 1})));  // through the hole
+    EXPECT_FALSE(trace(g, ray({2.5, 0.5, -1}, {0, 0, 1})));  // the blank glyph
+    // Along x at mid-depth: the outer wall (normal -x, outward), then the hole's wall (+x).
+    auto wall = trace(g, ray({-1, 0.5, 0.25}, {1, 0, 0}));
+    ASSERT_TRUE(wall);
+    EXPECT_NEAR(wall->t, 1, 1e-12);
+    EXPECT_NEAR(wall->normal.x, -1, 1e-12);
+    auto hole = trace(g, ray({0.5, 0.5, 0.25}, {1, 0, 0}));
+    ASSERT_TRUE(hole);
+    EXPECT_NEAR(hole->t, 0.25, 1e-12);
+    EXPECT_NEAR(hole->normal.x, -1, 1e-12);  // out of the material, into the hole
+    const auto o = make(square_o());
+    EXPECT_TRUE(Geometry::inside(*o, {0.1, 0.5, 0.25}));
+    EXPECT_FALSE(Geometry::inside(*o, {0.5, 0.5, 0.25}));
+    EXPECT_FALSE(Geometry::inside(*o, {0.1, 0.5, 0.6}));
+}
+
+TEST(Text, RaysAlongTheExtrusionAndGrazingTheCaps) {
+    Geometry g(scene_of({make(square_o())}));
+    // Parallel to the walls, exactly on a wall's line: the caps decide, without NaN.
+    for (double x : {0.0, 0.25, 1.0, std::nextafter(1.0, 2.0)}) {
+        Hit h;
+        if (g.intersect(ray({x, 0.5, -1}, {0, 0, 1}), 1e-6, 1e30, h)) {
+            EXPECT_TRUE(std::isfinite(h.t) && finite(h.normal));
+            EXPECT_NEAR(h.t, 1, 1e-12);
+        }
+    }
+    EXPECT_FALSE(trace(g, ray({1 + 1e-9, 0.5, -1}, {0, 0, 1})));
+    // Parallel to the caps: in them (z = 0, z = thickness) the walls still count, just
+    // outside they do not.
+    for (double z : {0.0, 0.5}) {
+        auto h = trace(g, ray({-1, 0.1, z}, {1, 0, 0}));
+        ASSERT_TRUE(h) << z;
+        EXPECT_NEAR(h->t, 1, 1e-12);
+    }
+    EXPECT_FALSE(trace(g, ray({-1, 0.1, -1e-9}, {1, 0, 0})));
+    EXPECT_FALSE(trace(g, ray({-1, 0.1, 0.5 + 1e-9}, {1, 0, 0})));
+}
+
+TEST(Text, TangentToACurvedWallMisses) {
+    // A quadratic bump from (0,0) over (0.5,1) to (1,0), closed by its chord: its top is at
+    // y = 0.5. POV-Ray's glyph solver has no root at a tangent, so the ray along the top misses.
+    scene::Text t;
+    scene::Text::Glyph bump;
+    bump.points = {{{0, 0}, true}, {{0.5, 1}, false}, {{1, 0}, true}};
+    bump.contour_ends = {3};
+    t.glyphs = {bump};
+    Geometry g(scene_of({make(t)}));
+    EXPECT_FALSE(trace(g, ray({-1, 0.5, 0.5}, {1, 0, 0})));
+    auto below = trace(g, ray({-1, 0.4, 0.5}, {1, 0, 0}));
+    ASSERT_TRUE(below);
+    const double s = (1 - std::sqrt(1 - 0.8)) / 2;  // y(s) = 2s(1-s) = 0.4
+    EXPECT_NEAR(below->t, 1 + s, 1e-12);
+    EXPECT_LT(below->normal.x, 0);
+}
+
+TEST(Text, EmptyTextIsNeverHit) {
+    scene::Text empty;
+    Geometry g(scene_of({make(empty)}));
+    EXPECT_FALSE(trace(g, ray({0, 0, -1}, {0, 0, 1})));
+    EXPECT_FALSE(Geometry::inside(*make(empty), {0, 0, 0}));
+    EXPECT_TRUE(bounds(make_text(empty)).empty());
+}
+
 }  // namespace
 }  // namespace lumen::render

@@ -55,6 +55,25 @@ scene::Mesh sample_shape(std::type_identity<scene::Mesh>) {  // a closed octahed
     return m;
 }
 
+// Two glyphs side by side: a rounded ring (quadratic edges with implied on-curve midpoints,
+// a hole wound the other way) and a triangle raised and pushed back by a text offset.
+scene::Text sample_shape(std::type_identity<scene::Text>) {
+    scene::Text t;
+    t.thickness = 0.5;
+    scene::Text::Glyph ring;
+    ring.points = {{{0, 0.2}, true},   {{0, 1}, false},     {{0.8, 1}, true},
+                   {{1, 1}, false},    {{1, 0}, true},      {{0.5, -0.2}, false},
+                   {{0.2, 0}, false},  {{0.3, 0.3}, true},  {{0.7, 0.3}, true},
+                   {{0.7, 0.7}, false}, {{0.3, 0.7}, true}};
+    ring.contour_ends = {7, 11};
+    scene::Text::Glyph triangle;
+    triangle.position = {1.3, 0.1, 0.2};
+    triangle.points = {{{0, 0}, true}, {{0.5, 1}, true}, {{1, 0}, true}};
+    triangle.contour_ends = {3};
+    t.glyphs = {ring, triangle};
+    return t;
+}
+
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
 struct WorldHit {
