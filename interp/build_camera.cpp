@@ -70,7 +70,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         cam = *cur.next().value.as<std::shared_ptr<const scene::Camera>>();
     cam.loc = cur.block_loc();
     glm::dvec3 sky{0, 1, 0}, look_at{0, 0, 1};
-    bool have_look_at = false, have_up = false, have_right = false;
+    bool have_look_at = false, have_up = false, have_right = false, type_given = false;
     std::optional<double> angle, vertical_angle;
     SourceLoc angle_loc;
     VectorLocs at{cam.loc, cam.loc, cam.loc};
@@ -100,6 +100,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         const std::string& w = item.keyword;
         if (const std::optional<scene::CameraType> type = camera_type(w)) {
             cam.type = *type;
+            type_given = true;
             if (w == "cylinder") {
                 const double n = cur.expect_float(w);  // truncated, as POV does
                 if (!(n >= 1 && n < 5)) cur.fail(item.loc, "cylinder camera type must be 1, 2, 3 or 4");
@@ -175,7 +176,10 @@ scene::Camera build_camera(ItemCursor& cur) {
         cam.up = u * ul;
     }
     // Step 4: an orthographic camera sized by its look_at distance.
-    if (cam.type == scene::CameraType::Orthographic && ((!have_up && !have_right) || angle)) {
+    // A declared camera used again (`camera { Camera_1 }`) arrives sized: only this block's
+    // `orthographic` sizes it (measured: POV renders such a copy unchanged).
+    if (cam.type == scene::CameraType::Orthographic && type_given &&
+        ((!have_up && !have_right) || angle)) {
         double k = glm::length(look_at - cam.location) / glm::length(cam.direction);
         cam.right *= k;
         cam.up *= k;

@@ -49,6 +49,14 @@ TEST_F(BuildCamera, OrthographicScaledByLookAtDistance) {
     EXPECT_NEAR(glm::length(u.up), 2, 1e-9);  // explicit up/right without angle: no scaling
 }
 
+TEST_F(BuildCamera, DeclaredOrthographicCameraIsNotSizedAgain) {
+    const scene::Camera a = run("camera { orthographic location <0,0,-10> look_at 0 }").camera;
+    const scene::Camera b =
+        run("#declare C = camera { orthographic location <0,0,-10> look_at 0 } camera { C }").camera;
+    expect_vec(b.right, a.right);
+    expect_vec(b.up, a.up);
+}
+
 TEST_F(BuildCamera, TransformsAppliedLast) {
     scene::Camera c = run("camera { translate x location <0,0,-5> rotate y*90 }").camera;
     expect_vec(c.location, {-5, 0, -1});  // (1,0,-5) rotated about y by 90
