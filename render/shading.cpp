@@ -210,8 +210,6 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
     if (!env.ambient_off) out += s.colour * f.ambient * env.ambient_light * s.opacity;
     out += s.colour * f.emission * s.opacity;
     if (!env.lights) return out;
-    const double thickness =
-        f.irid_amount > 0 ? irid_thickness(f, s.point, env.noise_generator) : 0.0;
     for (const LightSource& l : *env.lights) {
         LightSample ls;
         if (!illuminate(l, s.point, ls)) continue;
@@ -234,7 +232,7 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
             if (is_black(lc)) continue;
         }
         if (f.irid_amount > 0)
-            lc *= irid_factor(f, thickness, env.irid_wavelength, cos_light,
+            lc *= irid_factor(f, s.film_thickness, env.irid_wavelength, cos_light,
                               glm::dot(s.normal, s.view));
         const double diffuse = backside ? f.diffuse_back : f.diffuse;
         if (diffuse > 0) {

@@ -26,6 +26,7 @@ struct SurfaceSample {
     double opacity = 1;          // 1 − f − t (or the legacy formula)
     const scene::Finish* finish = nullptr;
     bool double_illuminate = false;
+    double film_thickness = 0;   // irid: the film's thickness here (irid_thickness)
 };
 
 // Scene-wide lighting state shared by all threads (read-only while rendering).

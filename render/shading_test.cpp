@@ -103,6 +103,7 @@ TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     s.normal = {0, 0, -1};
     s.colour = glm::dvec3(1);
     s.finish = &f;
+    s.film_thickness = irid_thickness(f, s.point, env.noise_generator);  // as the tracer sets it
     ThreadState state;
     const glm::dvec3 lit = local_light(s, env, InteriorList{}, state);
     const glm::dvec3 k = irid_factor(f, f.irid_thickness, env.irid_wavelength, 1.0, 1.0);

@@ -229,6 +229,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     RayColour out;
     glm::dvec3 filter(1);
     glm::dvec3 top_normal = raw_n;  // refraction bends about the top layer's normal
+    double top_film = 0;            // the top layer's irid film thickness
     glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
     bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
@@ -249,6 +250,9 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
         s.double_illuminate = double_illuminate;
+        if (layer.finish->irid_amount > 0)  // once per layer: lights and reflection share it
+            s.film_thickness = irid_thickness(*layer.finish, s.point, env_.noise_generator);
+        if (i == 0) top_film = s.film_thickness;
         out.rgb += filter * local_light(s, env_, *ctx.interiors, state);
         if (options_.indirect && layer.finish->diffuse > 0 && quality >= 9) {
             // Radiosity in place of ambient: diffuse × pigment × incident indirect light.
@@ -262,9 +266,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
             if (r.any() && layer.finish->irid_amount > 0) {
                 // POV's film tints the reflection too, the mirror direction as the light's.
                 const double cos_v = glm::dot(s.normal, d);
-                r.colour *= irid_factor(*layer.finish,
-                                        irid_thickness(*layer.finish, s.point, env_.noise_generator),
-                                        env_.irid_wavelength, cos_v, cos_v);
+                r.colour *= irid_factor(*layer.finish, s.film_thickness, env_.irid_wavelength,
+                                        cos_v, cos_v);
             }
             if (i == 0) top_reflectivity = r.colour, top_reflects = r.any();
             if (r.any())
@@ -322,8 +325,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
             fade = interior_fade(*hit.interior, hit.t, false);
         if (total_internal && top.irid_amount > 0) {
             const double cos_v = glm::dot(top_normal, d);  // the film tints it as a reflection
-            t.rgb *= irid_factor(top, irid_thickness(top, hit.point, env_.noise_generator),
-                                 env_.irid_wavelength, cos_v, cos_v);
+            t.rgb *= irid_factor(top, top_film, env_.irid_wavelength, cos_v, cos_v);
         }
         out.rgb += total_internal ? fade * t.rgb : fade * t.rgb * f;
         out.transmit = grey(fade) * t.transmit * trans;
