@@ -28,6 +28,18 @@ TEST_F(BuildText, FontFoundOnTheIncludePathAndStringKept) {
     EXPECT_EQ(t.glyphs[0].contour_ends.back(), int(t.glyphs[0].points.size()));
 }
 
+TEST_F(BuildText, InternalFontsAreTheIncludedTrueTypeFonts) {
+    // Measured: POV-Ray 3.7's internal fonts render as these files; other numbers are font 0.
+    const std::pair<const char*, const char*> cases[] = {
+        {"0", "povlogo.ttf"}, {"1", "timrom.ttf"},  {"2.9", "cyrvetic.ttf"},
+        {"3", "crystal.ttf"}, {"4", "povlogo.ttf"}, {"7", "povlogo.ttf"}};
+    for (const auto& [n, file] : cases) {
+        auto t = shape_of<scene::Text>(std::string("text { internal ") + n + " \"Ab\" 1, 0 }");
+        EXPECT_EQ(t.font, std::string("/usr/share/povray-3.7/include/") + file) << n;
+        EXPECT_EQ(t.glyphs.size(), 2u);
+    }
+}
+
 TEST_F(BuildText, FirstGlyphInkStartsAtZeroAndKerningApplies) {
     const TtfFont font(kTimrom);
     const unsigned a = font.glyph_index('A', false), v = font.glyph_index('V', false);

@@ -28,6 +28,17 @@ TEST_F(MacroTest, MacroAtItemLevelSplicesItsItems) {
     EXPECT_DOUBLE_EQ(to_float(items[3].value), 5);
 }
 
+TEST_F(MacroTest, AnObjectArgumentEndsWhereItsObjectEnds) {
+    // POV-Ray (shapes.inc's callers, incdemo/shapes.pov): `Obj -y` with no comma is Obj, then -y.
+    run("#macro Three(O, V, N) #declare Got = V; #declare GotN = N; #end\n"
+        "#macro Ball() sphere { 0, 1 } #end\n"
+        "Three(Ball() -y + x, 4)\n"
+        "#declare Sum = 0; #macro Two(A, B) #declare Sum = A + B; #end Two(1 - 2, 5)\n");
+    EXPECT_EQ(components(var("Got")), (std::vector<double>{1, -1, 0}));
+    EXPECT_DOUBLE_EQ(num_var("GotN"), 4);
+    EXPECT_DOUBLE_EQ(num_var("Sum"), 4);  // a numeric argument is one expression
+}
+
 TEST_F(MacroTest, ParametersAreLocal) {
     run("#declare P = 100;\n#macro M(P) #declare Seen = P; #end\nM(7)\n");
     EXPECT_DOUBLE_EQ(num_var("Seen"), 7);

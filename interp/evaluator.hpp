@@ -70,6 +70,10 @@ public:
 
     // ---- expressions (expressions.cpp) -------------------------------------------------------
     Value eval(const ast::Node& expr);
+    // `e`'s operands from `from` on folded into `acc` (what `e` computed before them).
+    Value fold_binary(const ast::Node& e, size_t from, Value acc);
+    // A macro argument, or two where an object is followed by a signed term (no comma).
+    void eval_argument(const ast::Node& arg, std::vector<Value>& args);
     double eval_float(const ast::Node& expr);
     bool eval_condition(const ast::Node& expr);
     Value lookup(const ast::Node& ident);  // identifier or built-in constant

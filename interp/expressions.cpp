@@ -1,4 +1,5 @@
 // Expression evaluation with POV-Ray's promotion rules (conversions.hpp).
+#include <algorithm>
 #include <cmath>
 
 #include "interp/conversions.hpp"
@@ -99,6 +100,34 @@ static Value apply_binary(Evaluator& ev, const std::string& op, const Value& a, 
     return result;
 }
 
+Value Evaluator::fold_binary(const ast::Node& e, size_t from, Value acc) {
+    for (size_t i = from; i < e.children.size(); ++i) {
+        Value rhs = eval(*e.children[i]);
+        acc = apply_binary(*this, e.ops.at(i - 1), acc, rhs, e.loc);
+    }
+    return acc;
+}
+
+void Evaluator::eval_argument(const ast::Node& a, std::vector<Value>& args) {
+    const bool additive = a.kind == Kind::Binary &&
+                          std::all_of(a.ops.begin(), a.ops.end(),
+                                      [](const std::string& op) { return op == "+" || op == "-"; });
+    if (!additive) {
+        args.push_back(eval(a));
+        return;
+    }
+    Value head = eval(*a.children.at(0));
+    if (head.is<double>() || head.is<VecN>() || head.is<scene::Colour>()) {
+        args.push_back(fold_binary(a, 1, std::move(head)));
+        return;
+    }
+    // POV-Ray ends an argument where its object (texture, ...) ends, so `F(Obj -y, 0)` passes
+    // Obj and -y (shapes.inc callers rely on it); the sign starts the next argument.
+    Value sign = apply_binary(*this, a.ops[0], Value{0.0, a.loc}, eval(*a.children.at(1)), a.loc);
+    args.push_back(std::move(head));
+    args.push_back(fold_binary(a, 2, std::move(sign)));
+}
+
 Value Evaluator::eval(const ast::Node& e) {
     switch (e.kind) {
         case Kind::Number:
@@ -123,14 +152,8 @@ Value Evaluator::eval(const ast::Node& e) {
                 for (double& x : c) x = -x;
             return make_numeric(s, std::move(c), e.loc);
         }
-        case Kind::Binary: {
-            Value acc = eval(*e.children.at(0));
-            for (size_t i = 1; i < e.children.size(); ++i) {
-                Value rhs = eval(*e.children[i]);
-                acc = apply_binary(*this, e.ops.at(i - 1), acc, rhs, e.loc);
-            }
-            return acc;
-        }
+        case Kind::Binary:
+            return fold_binary(e, 1, eval(*e.children.at(0)));
         case Kind::Ternary:
             return eval_condition(*e.children.at(0)) ? eval(*e.children.at(1)) : eval(*e.children.at(2));
         case Kind::Call: {

@@ -59,18 +59,21 @@ Item value_item(Value v, SourceLoc loc) {
     return it;
 }
 
+Item keyword_item(const std::string& word, SourceLoc loc) {
+    Item it;
+    it.kind = Item::Kind::Keyword;
+    it.keyword = word;
+    it.loc = loc;
+    return it;
+}
+
 }  // namespace
 
 Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
     switch (node.kind) {
-        case Kind::Keyword: {
-            Item it;
-            it.kind = Item::Kind::Keyword;
-            it.keyword = node.text;
-            it.loc = node.loc;
-            out.push_back(std::move(it));
+        case Kind::Keyword:
+            out.push_back(keyword_item(node.text, node.loc));
             return Flow::Normal;
-        }
         case Kind::Comma: {
             Item it;
             it.kind = Item::Kind::Comma;
@@ -99,7 +102,15 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
             }
             out.push_back(value_item(eval(node), node.loc));
             return Flow::Normal;
-        case Kind::Number: case Kind::String: case Kind::Ident: case Kind::Vector:
+        case Kind::Ident:
+            // `internal` is a function name in functions (`internal(42)`) and a keyword in
+            // `text { internal 1 ... }`: bare at item level, it is the keyword.
+            if (node.text == "internal") {
+                out.push_back(keyword_item(node.text, node.loc));
+                return Flow::Normal;
+            }
+            [[fallthrough]];
+        case Kind::Number: case Kind::String: case Kind::Vector:
         case Kind::Unary: case Kind::Binary: case Kind::Ternary: case Kind::Member:
         case Kind::Index: case Kind::Colour: case Kind::ArrayDecl: case Kind::Block: {
             if (node.kind == Kind::Block) block_item_ = &node;

@@ -23,7 +23,16 @@ const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
 
 void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out) {
     const auto& params = macro.params;
-    size_t given = call.children.size();
+    // Arguments are evaluated in the caller's scope, before the new frame exists.
+    std::vector<Value> args;
+    struct Reference { size_t param; std::string name; size_t frame; };
+    std::vector<Reference> refs;
+    for (const ast::NodePtr& a : call.children) {
+        if (a->kind == ast::Kind::Ident && symbols.find(a->text))
+            refs.push_back({args.size(), a->text, symbols.frame_of(a->text)});
+        eval_argument(*a, args);
+    }
+    const size_t given = args.size();
     if (given > params.size())
         throw LumenError(call.loc, "macro '" + macro.text + "' expects " + std::to_string(params.size()) +
                                        " argument(s), found " + std::to_string(given));
@@ -36,17 +45,6 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
                                        std::to_string(options_.max_macro_depth) + " calls deep");
     budget.step(call.loc);
     const ast::Node& body = parse_macro_body(macro);
-
-    // Arguments are evaluated in the caller's scope, before the new frame exists.
-    std::vector<Value> args;
-    struct Reference { size_t param; std::string name; size_t frame; };
-    std::vector<Reference> refs;
-    for (size_t i = 0; i < given; ++i) {
-        const ast::Node& a = *call.children[i];
-        args.push_back(eval(a));
-        if (a.kind == ast::Kind::Ident && symbols.find(a.text))
-            refs.push_back({i, a.text, symbols.frame_of(a.text)});
-    }
 
     ScopedSet depth(macro_depth_, macro_depth_ + 1);
     ScopedSet inside(breakable_, 1);  // #break ends the macro
