@@ -15,6 +15,10 @@ void type_error(const Value& v, const char* expected) {
     throw LumenError(v.loc, std::string("expected ") + expected + ", found " + article + " " + found);
 }
 
+void unsupported_error(const scene::Unsupported& u) {
+    throw LumenError(u.loc, "'" + u.feature + "' is not supported yet");
+}
+
 bool is_numeric(const Value& v) {
     return v.is<double>() || v.is<VecN>() || v.is<scene::Colour>();
 }

@@ -44,5 +44,7 @@ std::string format_float(double f, int width, int precision);
 double six_digits(double x);
 
 [[noreturn]] void type_error(const Value& v, const char* expected);
+// "'isosurface' is not supported yet" at the feature's location.
+[[noreturn]] void unsupported_error(const scene::Unsupported& u);
 
 }  // namespace lumen::interp

@@ -117,7 +117,7 @@ void Evaluator::eval_argument(const ast::Node& a, std::vector<Value>& args) {
         return;
     }
     Value head = eval(*a.children.at(0));
-    if (head.is<double>() || head.is<VecN>() || head.is<scene::Colour>()) {
+    if (is_numeric(head)) {
         args.push_back(fold_binary(a, 1, std::move(head)));
         return;
     }
