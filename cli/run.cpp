@@ -22,6 +22,7 @@
 #include "base/warning_log.hpp"
 #include "render/frame.hpp"
 #include "render/image_output.hpp"
+#include "render/object_queries.hpp"
 
 namespace lumen::cli {
 namespace {
@@ -87,9 +88,12 @@ int run_frames(const Options& o, SourceManager& sources) {
     WarningLog warnings(print_diagnostic);  // a warning once per location, per frame
     const interp::WarningSink warn = [&](const Diagnostic& d) { warnings.report(d); };
     RadiosityPass radiosity;  // one solution serves frames where only the camera moves
+    const auto object_queries = render::make_object_queries();
     for (const Frame& frame : plan_frames(o)) {
         const auto start = Clock::now();
-        scene::Scene scene = interp::interpret_file(sources, o.input, frame.scene, warn);
+        interp::InterpOptions scene_options = frame.scene;
+        scene_options.object_queries = object_queries;  // trace() and inside()
+        scene::Scene scene = interp::interpret_file(sources, o.input, scene_options, warn);
         warnings.flush();
         apply_radiosity_switch(scene, o.radiosity);
         const double parse_seconds = seconds_since(start);

@@ -22,5 +22,7 @@ using BuiltinTable = std::unordered_map<std::string, Builtin>;
 
 // abs .. tanh, atan2, div, mod, pow, min, max, bitwise_*: with POV-Ray's domain rules.
 void add_math_builtins(BuiltinTable& t);
+// min_extent, max_extent, trace, inside: questions about an object.
+void add_object_builtins(BuiltinTable& t);
 
 }  // namespace lumen::interp

@@ -9,7 +9,6 @@
 
 #include "interp/builtin_table.hpp"
 #include "interp/conversions.hpp"
-#include "interp/object_extents.hpp"
 
 namespace lumen::interp {
 
@@ -117,8 +116,7 @@ const BuiltinTable& builtin_table();
 bool Evaluator::is_builtin_function(const std::string& name) { return builtin_table().count(name) > 0; }
 
 Value Evaluator::call_builtin(const ast::Node& call) {
-    static const char* const unsupported[] = {"trace", "inside",
-                                              "vturbulence", "eval_pigment"};
+    static const char* const unsupported[] = {"vturbulence", "eval_pigment"};
     for (const char* u : unsupported)
         if (call.text == u) throw LumenError(call.loc, std::string("'") + u + "' is not supported");
     auto it = builtin_table().find(call.text);
@@ -200,6 +198,7 @@ const BuiltinTable& builtin_table() {
     static const BuiltinTable table = [] {
         BuiltinTable t;
         add_math_builtins(t);
+        add_object_builtins(t);
         t["select"] = {3, 4, true, [](Evaluator& ev, const ast::Node& c, Args&) {
                            double s = ev.eval_float(*c.children[0]);
                            size_t pick = c.children.size() == 3 ? (s < 0 ? 1 : 2)
@@ -231,14 +230,6 @@ const BuiltinTable& builtin_table() {
                             for (double x : v) s += x * x;
                             return Value{std::sqrt(s), c.loc};
                         }};
-        for (const bool max : {false, true})
-            t[max ? "max_extent" : "min_extent"] = {
-                1, 1, false, [max](Evaluator&, const ast::Node& c, Args& a) {
-                    if (a[0].is<scene::Unsupported>()) unsupported_error(a[0].as<scene::Unsupported>());
-                    if (!a[0].is<scene::ObjectPtr>()) type_error(a[0], "an object");
-                    const Extents e = object_extents(*a[0].as<scene::ObjectPtr>());
-                    return vec3(max ? e.max : e.min, c.loc);
-                }};
         t["vnormalize"] = {1, 1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
                                glm::dvec3 p = to_vec3(a[0]);
                                double len = std::sqrt(dot(p, p));

@@ -148,7 +148,7 @@ TEST_F(BuiltinTest, ArgumentErrors) {
     EXPECT_EQ(expr_error("strlen(5)"), "expr:1:8: error: expected a string, found a float");
     EXPECT_EQ(expr_error("vdot(\"a\", x)"), "expr:1:6: error: expected a vector, found a string");
     EXPECT_EQ(expr_error("min_extent(x)"), "expr:1:12: error: expected an object, found a vector");
-    EXPECT_EQ(expr_error("trace(x, x, x)"), "expr:1:1: error: 'trace' is not supported");
+    EXPECT_EQ(expr_error("trace(x, x, x)"), "expr:1:7: error: expected an object, found a vector");
     EXPECT_EQ(expr_error("sqr(2)"), "expr:1:1: error: undeclared identifier 'sqr'");
 }
 

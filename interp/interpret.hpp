@@ -1,12 +1,14 @@
 // Public entry point of the interpreter: .pov file -> scene::Scene.
 #pragma once
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "base/diagnostics.hpp"
 #include "base/source.hpp"
+#include "scene/object_queries.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::interp {
@@ -39,6 +41,9 @@ struct InterpOptions {
     size_t max_memory = default_max_memory();     // heap while evaluating, 0 = none (472 MB)
     int max_macro_depth = 200;
     int max_include_depth = 64;
+    // Answers trace() and inside() (the renderer's, given by the caller); without it they are
+    // reported as not supported.
+    std::shared_ptr<scene::ObjectQueries> object_queries;
 };
 
 using WarningSink = std::function<void(const Diagnostic&)>;
