@@ -113,15 +113,17 @@ bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out)
            std::fabs(out.colour.z) >= kEpsilon;
 }
 
-bool passes_projection(const LightSource& l, const glm::dvec3& point, const glm::dvec3& dir,
-                       double distance) {
-    if (!l.projection) return true;
+double projection_reach(const LightSource& l, const glm::dvec3& point, const glm::dvec3& dir,
+                        double distance) {
+    if (!l.projection) return distance;
     // Only the segment between the point and the light counts (an object beyond the light
     // projects nothing), with the shadow rays' tolerance at both ends.
     constexpr double kTolerance = 1e-3;
-    if (distance <= 2 * kTolerance) return false;
+    if (distance <= 2 * kTolerance) return 0;
     Hit hit;
-    return l.projection->intersect(Ray{point, dir}, kTolerance, distance - kTolerance, hit);
+    if (!l.projection->intersect(Ray{point, dir}, kTolerance, distance - kTolerance, hit))
+        return 0;
+    return hit.t;
 }
 
 glm::dvec3 area_sample_position(const LightSource& l, double u, double v,

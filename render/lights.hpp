@@ -39,10 +39,13 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
 // Returns false when the point gets no light at all (outside a cone).
 bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& out);
 
-// False when `light` has a projected_through object that the segment from `point` along unit
-// `dir` (towards the light, `distance` long) does not cross: no light arrives that way.
-bool passes_projection(const LightSource& light, const glm::dvec3& point, const glm::dvec3& dir,
-                       double distance);
+// How far from `point` along unit `dir` (towards the light, `distance` away) shadows are
+// tested: all the way without a projected_through object; with one, 0 (no light) where the
+// segment misses it, else up to its nearest crossing. POV-Ray tests no further (measured: an
+// object between the projected one and the light, or the projected object itself placed in
+// the scene, casts no shadow).
+double projection_reach(const LightSource& light, const glm::dvec3& point, const glm::dvec3& dir,
+                        double distance);
 
 // World position of area-light grid sample (u, v), given as fractional grid indices so jitter
 // can move it; `to_light` (unit, point -> light centre) is used by `orient`.

@@ -52,9 +52,10 @@ private:
             } else if (dist > 0) {
                 to /= dist;
             }
+            const double reach = projection_reach(l_, s_.point, to, dist);
             state_.area_filter[k] =
-                passes_projection(l_, s_.point, to, dist)
-                    ? shadow_filter(*env_.geometry, s_.point, to, dist, interiors_, state_.counters)
+                reach > 0
+                    ? shadow_filter(*env_.geometry, s_.point, to, reach, interiors_, state_.counters)
                     : glm::dvec3(0);
             state_.area_valid[k] = 1;
         }
@@ -122,17 +123,18 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     glm::dvec3 filter;
     const bool fog = fog_dims(l, env);
     double solid = 0;  // the way inside solid objects, where there is no fog
-    if (l.shadowless)
-        filter = glm::dvec3(passes_projection(l, s.point, ls.dir, ls.distance));
-    else if (shadowed_by_itself(s, ls.dir, env))
+    if (l.shadowless) {
+        filter = glm::dvec3(projection_reach(l, s.point, ls.dir, ls.distance) > 0);
+    } else if (shadowed_by_itself(s, ls.dir, env)) {
         return glm::dvec3(0);
-    else if (l.area && env.quality >= 5)
+    } else if (l.area && env.quality >= 5) {
         filter = AreaShadow(l, s, ls, env, interiors, state).filter();
-    else if (!passes_projection(l, s.point, ls.dir, ls.distance))
-        return glm::dvec3(0);
-    else
-        filter = shadow_filter(*env.geometry, s.point, ls.dir, ls.distance, interiors,
-                               state.counters, fog ? &solid : nullptr);
+    } else {
+        const double reach = projection_reach(l, s.point, ls.dir, ls.distance);
+        if (!(reach > 0)) return glm::dvec3(0);
+        filter = shadow_filter(*env.geometry, s.point, ls.dir, reach, interiors, state.counters,
+                               fog ? &solid : nullptr);
+    }
     if (fog && solid < ls.distance)
         filter *= fog_along(*env.fogs, Ray{s.point, ls.dir}, ls.distance - solid,
                             env.noise_generator).attenuation;
