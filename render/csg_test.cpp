@@ -100,6 +100,25 @@ TEST(Csg, InverseChildInIntersectionEqualsDifference) {
     EXPECT_FALSE(Geometry::inside(*whole, {0, 0, 0}));
 }
 
+TEST(Csg, AnInvertedUnionLosesItsInnerSurfaces) {
+    // POV-Ray inverts a union into the intersection of its inverted members: cut out of a
+    // box, the two overlapping spheres leave one hole with no wall inside it.
+    auto cube = make(scene::Box{{-3, -3, -3}, {3, 3, 3}});
+    auto holes = csg(CsgOp::Union, pair());
+    holes->inverse = true;
+    Geometry g(scene_of({csg(CsgOp::Intersection, {cube, holes})}));
+    auto h = trace(g, ray({0, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 1.5, 1e-12);  // the right sphere's far side, not the left one's at 0.5
+    // At the top level too.
+    auto top = csg(CsgOp::Union, pair());
+    top->inverse = true;
+    Geometry gt(scene_of({top}));
+    auto ht = trace(gt, ray({0, 0, 0}, {1, 0, 0}));
+    ASSERT_TRUE(ht);
+    EXPECT_NEAR(ht->t, 1.5, 1e-12);
+}
+
 TEST(Csg, ClippedByLeavesAnOpenShell) {
     auto s = make(scene::Sphere{{0, 0, 0}, 1});
     s->clipped_by = {make(scene::Plane{{0, 1, 0}, 0})};  // keep y < 0

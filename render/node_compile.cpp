@@ -87,8 +87,13 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     std::vector<uint32_t> bounds = compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
 
     if (auto* csg = std::get_if<scene::Csg>(&object.shape)) {
-        node.kind = csg->op == scene::CsgOp::Union ? NodeKind::Union
-                    : csg->op == scene::CsgOp::Merge ? NodeKind::Merge
+        // POV-Ray inverts a union into the intersection of its inverted members (De Morgan):
+        // an inverted union keeps only its outer surface, as a merge does (measured on a
+        // box with inverted unions of cylinders cut out of it).
+        const bool merged = csg->op == scene::CsgOp::Merge ||
+                            (csg->op == scene::CsgOp::Union && node.inverse);
+        node.kind = merged                              ? NodeKind::Merge
+                    : csg->op == scene::CsgOp::Union ? NodeKind::Union
                                                      : NodeKind::Intersection;
         NodeContext inner;
         inner.to_world = world;
@@ -164,7 +169,8 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         stack.pop_back();
         const scene::Object& o = *obj;
         auto* csg = std::get_if<scene::Csg>(&o.shape);
-        if (!csg || csg->op != scene::CsgOp::Union) {
+        // An inverted union is not flattened: it is a merge (compile_object).
+        if (!csg || csg->op != scene::CsgOp::Union || o.inverse != contexts[at].invert) {
             roots.push_back(compile_object(store, o, contexts[at]));
             to_world.push_back(o.transform.then(contexts[at].to_world));
             continue;
