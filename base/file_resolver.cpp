@@ -38,6 +38,7 @@ std::string FileResolver::find(const std::string& name, Kind kind) const {
     if (p.is_absolute()) {
         dirs.emplace_back();
     } else {
+        dirs.emplace_back(".");  // POV-Ray looks in the working folder first (measured)
         dirs.emplace_back(path_.scene_dir);
         for (const std::string& d : path_.library_paths) dirs.emplace_back(d);
         if (!path_.system_include_dir.empty()) dirs.emplace_back(path_.system_include_dir);

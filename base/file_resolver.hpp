@@ -1,7 +1,8 @@
 // Finds the files a scene names (#include, and the images, fonts, density files and #fopen
 // files of the builders) in POV-Ray's search order: an absolute name as it is; otherwise the
-// folder of the scene file, then each +L / Library_Path folder in the order given, then
-// POV-Ray's installed include folder. Each folder is tried with the name as written and then
+// working folder (POV-Ray's first place, where #write puts files), the folder of the scene file
+// (lumen's addition: POV-Ray needs it in +L), then each +L / Library_Path folder in the order
+// given, then POV-Ray's installed include folder. Each folder is tried with the name as written and then
 // with each of the kind's extensions added (POV's `#include "colors"` finds colors.inc).
 #pragma once
 #include <string>

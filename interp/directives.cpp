@@ -37,8 +37,7 @@ Flow Evaluator::run_directive(const ast::Node& n, std::vector<Item>& out) {
             return Flow::Normal;
         }
         case Kind::Message: message(n); return Flow::Normal;
-        case Kind::FileIO:
-            throw LumenError(n.loc, "file I/O directive '#" + n.text + "' is not supported");
+        case Kind::FileIO: file_io(n); return Flow::Normal;
         default:
             throw LumenError(n.loc, std::string("unexpected ") + ast::kind_name(n.kind));
     }

@@ -115,11 +115,6 @@ TEST_F(DirectiveTest, ErrorDirectiveStopsWithItsText) {
     EXPECT_EQ(error_of("#declare A = 1;\n#error concat(\"bad \", str(A,0,0))\n"), "test.pov:2:1: error: bad 1");
 }
 
-TEST_F(DirectiveTest, FileIoIsRefused) {
-    EXPECT_EQ(error_of("\n#fopen F \"out.txt\" write\n"),
-              "test.pov:2:1: error: file I/O directive '#fopen' is not supported");
-}
-
 TEST_F(DirectiveTest, UndefOfUnknownNameWarns) {
     run("#undef Nothing\n");
     ASSERT_EQ(messages.size(), 1u);

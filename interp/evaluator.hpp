@@ -72,7 +72,8 @@ public:
     Value eval(const ast::Node& expr);
     // `e`'s operands from `from` on folded into `acc` (what `e` computed before them).
     Value fold_binary(const ast::Node& e, size_t from, Value acc);
-    // A macro argument, or two where an object is followed by a signed term (no comma).
+    // A macro argument or #write item, or two where a value that is not a number (an object,
+    // a string) is followed by a signed term with no comma: POV-Ray ends the item there.
     void eval_argument(const ast::Node& arg, std::vector<Value>& args);
     double eval_float(const ast::Node& expr);
     bool eval_condition(const ast::Node& expr);
@@ -138,6 +139,13 @@ private:
     void run_for(const ast::Node& node, std::vector<Item>& out);
     Flow run_loop_body(const ast::Node& body, std::vector<Item>& out);
     void message(const ast::Node& node);
+    // #fopen / #fclose / #read / #write (interp/file_io.cpp).
+    void file_io(const ast::Node& node);
+    std::shared_ptr<FileValue> open_file(const ast::Node& node);
+    std::shared_ptr<FileValue> file_named(const ast::Node& handle, bool writing);
+    void close_file(const std::string& id);
+    void write_file(const ast::Node& node);
+    void read_file(const ast::Node& node);
     void loop_limit(long long& iterations, const ast::Node& node, const char* what);
 
     const ast::Node& parse_macro_body(const ast::Node& macro);

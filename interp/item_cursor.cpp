@@ -54,6 +54,7 @@ struct TypeNamer {
     std::string operator()(const std::shared_ptr<const FunctionValue>& f) const {
         return "a " + f->keyword;
     }
+    std::string operator()(const std::shared_ptr<FileValue>&) const { return "a file identifier"; }
     std::string operator()(const scene::Unsupported& u) const { return "'" + u.feature + "'"; }
 };
 

@@ -10,7 +10,7 @@ constexpr const char* kTypeNames[] = {
     "block",       "object",      "texture",     "pigment",      "finish",     "normal",
     "interior",    "material",    "camera",      "light_source", "transform",  "color_map",
     "pigment_map", "texture_map", "normal_map",  "fog",          "sky_sphere", "macro",
-    "function",    "unsupported feature",
+    "function",    "file",        "unsupported feature",
 };
 static_assert(std::size(kTypeNames) == std::variant_size_v<Value::Variant>);
 

@@ -20,6 +20,7 @@ struct BlockValue;
 struct ArrayValue;
 struct MacroValue;
 struct FunctionValue;
+struct FileValue;
 
 // A vector of 2..5 components, or a 12-component matrix literal.
 struct VecN {
@@ -68,6 +69,7 @@ struct Value {
         std::shared_ptr<const scene::SkySphere>,          // sky_sphere
         std::shared_ptr<const MacroValue>,                // macro
         std::shared_ptr<const FunctionValue>,             // function / spline (not evaluated)
+        std::shared_ptr<FileValue>,                       // #fopen file (interp/file_io.hpp)
         scene::Unsupported>;                              // unsupported feature
     Value() = default;
     Value(Variant value, SourceLoc where = {}, std::shared_ptr<const BlockValue> edit = nullptr)
