@@ -98,11 +98,11 @@ glm::dvec2 read_range(ItemCursor& cur, const std::string& w) {
     return {lo, cur.expect_float(w)};
 }
 
-// `tiling N`: POV-Ray takes any N outside 1..27 as 1; lumen models 1, 2, 3, 5 and 10.
+// `tiling N`: POV-Ray refuses N outside 1..27; lumen models all but the Penrose tilings 25-27.
 void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern& pattern, pattern::Tiling& t) {
     t.type = cur.expect_int(kw.keyword);
-    if (t.type < 1 || t.type > 27) t.type = 1;
-    if (t.type != 1 && t.type != 2 && t.type != 3 && t.type != 5 && t.type != 10)
+    if (t.type < 1 || t.type > 27) cur.fail(kw.loc, "tiling number must be between 1 and 27");
+    if (t.type >= 25)
         mark_unsupported(pattern, "pattern 'tiling " + std::to_string(t.type) + "'", kw.loc);
 }
 

@@ -101,7 +101,7 @@ TEST_F(BuildPattern, FractalArguments) {
     EXPECT_NE(error_of("sphere { 0, 1 pigment { magnet 1 mandel 9 exponent 3 } }"), "no error");
 }
 
-// slope's two forms, tiling's number (the unmodelled tilings are reported), quilted's
+// slope's two forms, tiling's number (1..27; the Penrose tilings are reported), quilted's
 // skipped frequency, and the voxels of a df3 file found beside the scene.
 TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
     const auto pattern = [&](const std::string& p) {
@@ -119,10 +119,13 @@ TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
     EXPECT_DOUBLE_EQ(full.altitude_length, 3);
     EXPECT_DOUBLE_EQ(full.altitude_range.x, 1);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { slope { y extra } } }"), "no error");
-    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 30").kind).type, 1);
-    EXPECT_FALSE(pattern("tiling 3").unsupported);
-    ASSERT_TRUE(pattern("tiling 7").unsupported);
-    EXPECT_EQ(pattern("tiling 7").unsupported->feature, "pattern 'tiling 7'");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { tiling 28 } }"),
+              "t.pov:1:25: error: tiling number must be between 1 and 27");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { tiling 0 } }"), "no error");
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 24").kind).type, 24);
+    EXPECT_FALSE(pattern("tiling 7").unsupported);
+    ASSERT_TRUE(pattern("tiling 26").unsupported);
+    EXPECT_EQ(pattern("tiling 26").unsupported->feature, "pattern 'tiling 26'");
     EXPECT_DOUBLE_EQ(pattern("quilted").frequency, 0);
     EXPECT_DOUBLE_EQ(pattern("quilted frequency 2").frequency, 2);
     const auto df3 = std::get<pattern::DensityFile>(

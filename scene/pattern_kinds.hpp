@@ -176,7 +176,7 @@ struct Slope {
         f("altitude_range", s.altitude_range);
     }
 };
-// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1, 2, 3, 5 and 10).
+// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1-24).
 struct Tiling {
     int type = 1;
     template <class Self, class F> static void fields(Self& s, F&& f) { f("tiling", s.type); }

@@ -1,0 +1,49 @@
+// A plane tiling given as data: a lattice cell and the convex tiles it repeats, each with its
+// kind and the width of its bevel at each edge. POV-Ray 3.7's tiling patterns put a point in
+// a tile of kind k among T kinds at (k + bevel) / T, the bevel being 1 on the tile's edges and
+// falling linearly with the distance d from each edge: max(1 − d / width) over the edges,
+// floored at 0 (flat inside where every edge is farther than its width).
+#pragma once
+#include <glm/vec2.hpp>
+#include <vector>
+
+namespace lumen::render {
+
+struct TilingTile {
+    int kind = 0;
+    std::vector<glm::dvec2> corners;  // convex, any winding (sorted about the centroid)
+    std::vector<double> widths;       // one per edge (from corner i to i + 1), or one for all
+};
+
+struct TilingLayout {
+    glm::dvec2 origin{0, 0};  // the layout's coordinates are the point's plus this
+    double period_x = 1;      // the lattice: (period_x, 0) and row
+    glm::dvec2 row{0, 1};
+    int kinds = 1;
+    std::vector<TilingTile> tiles;
+};
+
+// A tiling's compiled form: each tile's edges as half-planes.
+class TilingEvaluator {
+public:
+    explicit TilingEvaluator(const TilingLayout& layout);
+    // The pattern's value at (x, z) of the x-z plane, in [0, 1].
+    double operator()(double x, double z) const;
+
+private:
+    struct Edge {
+        glm::dvec2 normal;  // unit, pointing into the tile
+        double offset;      // normal · corner
+        double inv_width;
+    };
+    struct Tile {
+        int kind;
+        std::vector<Edge> edges;
+    };
+    glm::dvec2 origin_, row_;
+    double period_x_;
+    double kinds_;
+    std::vector<Tile> tiles_;
+};
+
+}  // namespace lumen::render
