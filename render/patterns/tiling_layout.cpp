@@ -49,8 +49,7 @@ double TilingEvaluator::operator()(double x, double z) const {
     p.x -= std::floor(p.x / period_x_) * period_x_;
     // The tile whose nearest edge is farthest (the one holding the point; on a shared edge
     // either gives the same bevel).
-    double best = -1e300, bevel = 0;
-    int kind = 0;
+    double best = -1e300, bevel = 0, kind = 0;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
             const glm::dvec2 q = p - double(j) * row_ - glm::dvec2(i * period_x_, 0);

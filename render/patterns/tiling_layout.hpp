@@ -10,7 +10,7 @@
 namespace lumen::render {
 
 struct TilingTile {
-    int kind = 0;
+    double kind = 0;  // POV lifts some kinds by a hair to keep their flats off a map's key
     std::vector<glm::dvec2> corners;  // convex, any winding (sorted about the centroid)
     std::vector<double> widths;       // one per edge (from corner i to i + 1), or one for all
 };
@@ -37,7 +37,7 @@ private:
         double inv_width;
     };
     struct Tile {
-        int kind;
+        double kind;
         std::vector<Edge> edges;
     };
     glm::dvec2 origin_, row_;

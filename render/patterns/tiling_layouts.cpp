@@ -5,7 +5,20 @@
 
 #include <cmath>
 #include <glm/vec4.hpp>
+#include <array>
 #include <map>
+
+
+
+
+
+
+
+
+
+
+
+
 
 namespace lumen::render {
 namespace {
@@ -13,7 +26,7 @@ namespace {
 using V = glm::dvec2;
 const double kS3 = std::sqrt(3.0), kH = kS3 / 2, kS2 = std::sqrt(2.0);
 
-TilingTile rect(int kind, double x0, double z0, double x1, double z1, double width) {
+TilingTile rect(double kind, double x0, double z0, double x1, double z1, double width) {
     return {kind, {{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}}, {width}};
 }
 
@@ -34,6 +47,40 @@ std::vector<TilingTile> square_rectangle_cell(V at) {
             rect(1, at.x + 0, at.y + 2, at.x + 2, at.y + 3, 0.5),
             rect(2, at.x + 0, at.y + 0, at.x + 1, at.y + 2, 0.5),
             rect(2, at.x + 2, at.y + 1, at.x + 3, at.y + 3, 0.5)};
+}
+
+// The tile turned by `degrees` about `centre`.
+TilingTile turned(TilingTile t, V centre, double degrees) {
+    const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+    for (V& p : t.corners) {
+        const V d = p - centre;
+        p = centre + V{c * d.x - s * d.y, s * d.x + c * d.y};
+    }
+    return t;
+}
+
+// Tilings 16 and 17 (3.4.6.4): a hexagon ringed by a square on each edge and a triangle at
+// each corner; `square_kinds` and `triangle_kinds` give the kinds going round from the square
+// below it and the triangle at its lower left.
+TilingLayout hexa_square_triangle(int kinds, double hexagon_kind,
+                                  std::array<double, 6> square_kinds,
+                                  std::array<double, 6> triangle_kinds) {
+    const double w = 1 / (2 * kS3);
+    const V c{1 + kH, 0.5 + kH};
+    TilingLayout l{{0.5, 0}, 3 + kS3, {1.5 + kH, 0.5 + kH}, kinds, {}};
+    l.tiles.push_back({hexagon_kind,
+                       {c + V{1, 0}, c + V{0.5, kH}, c + V{-0.5, kH}, c + V{-1, 0},
+                        c + V{-0.5, -kH}, c + V{0.5, -kH}},
+                       {w}});
+    const TilingTile square = rect(0, kH + 0.5, -0.5, kH + 1.5, 0.5, w);
+    const TilingTile triangle{0, {{0.5, 0}, {kH + 0.5, 0.5}, {kH + 0.5, -0.5}}, {w}};
+    for (int k = 0; k < 6; ++k) {
+        l.tiles.push_back(turned(square, c, 60 * k));
+        l.tiles.back().kind = square_kinds[k];
+        l.tiles.push_back(turned(triangle, c, 60 * k));
+        l.tiles.back().kind = triangle_kinds[k];
+    }
+    return l;
 }
 
 std::map<int, TilingLayout> make_layouts() {
@@ -96,6 +143,12 @@ std::map<int, TilingLayout> make_layouts() {
             l.tiles.push_back(rect(1, s.x, s.y, s.x + 2, s.y + 2, 0.5));
         m[15] = l;
     }
+    // 16, hexa_square_triangle: squares 0, triangles 1, hexagons 2.
+    m[16] = hexa_square_triangle(3, 2, {0, 0, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 1});
+    // 17, hexa_square_triangle_6: the squares by their three directions, the triangles by
+    // their two (POV lifts two of the square kinds by 1e-6).
+    m[17] = hexa_square_triangle(6, 5, {0, 2.000001, 1.000001, 0, 2.000001, 1.000001},
+                                 {4, 3, 4, 3, 4, 3});
     // 18, rectangle_pair: 2 × 1 rectangles paired into squares, the pairs alternating.
     m[18] = rectangles({{2, 0, 4, 1}, {2, 1, 4, 2}, {0, 2, 2, 3}, {0, 3, 2, 4}},
                        {{0, 0, 1, 2}, {1, 0, 2, 2}, {2, 2, 3, 4}, {3, 2, 4, 4}});
