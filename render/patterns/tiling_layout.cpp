@@ -31,14 +31,16 @@ TilingEvaluator::TilingEvaluator(const TilingLayout& layout)
                 widths = w;
             }
         }
-        Tile tile{t.kind, {}};
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const glm::dvec2 a = c[i], b = c[(i + 1) % c.size()];
+        // The line a → b with the tile on its left.
+        const auto line = [](glm::dvec2 a, glm::dvec2 b, double width) {
             const glm::dvec2 along = glm::normalize(b - a);
-            const glm::dvec2 inward{-along.y, along.x};  // counter-clockwise corners
-            const double w = widths.size() == 1 ? widths[0] : widths[i];
-            tile.edges.push_back({inward, glm::dot(inward, a), 1 / w});
-        }
+            const glm::dvec2 inward{-along.y, along.x};
+            return Edge{inward, glm::dot(inward, a), 1 / width};
+        };
+        Tile tile{t.kind, {}, {}};
+        for (std::size_t i = 0; i < n; ++i)
+            tile.edges.push_back(line(c[i], c[(i + 1) % n], widths[widths.size() == 1 ? 0 : i]));
+        for (const auto& cut : t.cuts) tile.cuts.push_back(line(cut[0], cut[1], 1));
         tiles_.push_back(std::move(tile));
     }
 }
@@ -60,6 +62,8 @@ double TilingEvaluator::operator()(double x, double z) const {
                     inside = std::min(inside, d);
                     rise = std::max(rise, 1 - d * e.inv_width);
                 }
+                for (const Edge& e : t.cuts)
+                    inside = std::min(inside, glm::dot(e.normal, q) - e.offset);
                 if (inside > best) best = inside, bevel = rise, kind = t.kind;
             }
         }

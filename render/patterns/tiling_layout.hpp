@@ -5,14 +5,23 @@
 // floored at 0 (flat inside where every edge is farther than its width).
 #pragma once
 #include <glm/vec2.hpp>
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace lumen::render {
 
 struct TilingTile {
+    TilingTile() = default;
+    TilingTile(double k, std::vector<glm::dvec2> c, std::vector<double> w,
+               std::vector<std::array<glm::dvec2, 2>> cut = {})
+        : kind(k), corners(std::move(c)), widths(std::move(w)), cuts(std::move(cut)) {}
     double kind = 0;  // POV lifts some kinds by a hair to keep their flats off a map's key
     std::vector<glm::dvec2> corners;  // convex, any winding (sorted about the centroid)
     std::vector<double> widths;       // one per edge (from corner i to i + 1), or one for all
+    // Lines that cut the tile without bevelling it (the tile keeps the left of a → b): POV
+    // bevels some tiles differently on either side of its folds.
+    std::vector<std::array<glm::dvec2, 2>> cuts;
 };
 
 struct TilingLayout {
@@ -39,6 +48,7 @@ private:
     struct Tile {
         double kind;
         std::vector<Edge> edges;
+        std::vector<Edge> cuts;
     };
     glm::dvec2 origin_, row_;
     double period_x_;

@@ -4,6 +4,7 @@
 #include "render/patterns/tiling_layouts.hpp"
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 #include <array>
 #include <map>
@@ -83,6 +84,80 @@ TilingLayout hexa_square_triangle(int kinds, double hexagon_kind,
     return l;
 }
 
+// A regular polygon of side 1 about `centre` whose first edge faces `first_normal` degrees;
+// edge k faces first_normal + k · 360 / sides and gets width(facing angle in degrees).
+template <class Width>
+TilingTile regular(double kind, V centre, int sides, double first_normal, Width width) {
+    const double step = 360.0 / sides, radius = 0.5 / std::sin(M_PI / sides);
+    TilingTile t{kind, {}, {}};
+    for (int k = 0; k < sides; ++k) {
+        const double a = (first_normal + step * (k - 0.5)) * M_PI / 180;
+        t.corners.push_back(centre + radius * V{std::cos(a), std::sin(a)});
+    }
+    for (int k = 0; k < sides; ++k) t.widths.push_back(width(first_normal + step * k));
+    return t;
+}
+TilingTile regular(double kind, V centre, int sides, double first_normal, double width) {
+    return regular(kind, centre, sides, first_normal, [&](double) { return width; });
+}
+
+// Tilings 19 and 20 (3.3.3.3.6): the triangle grid (a corner at the origin, rows of height
+// √3/2) less one hexagon per lattice cell, the cells spanned by (7, 0) and `row`; up-pointing
+// triangles are kind 0, down-pointing 1, hexagons 2.
+TilingLayout snub_hexagonal(V row) {
+    const double w = 1 / (2 * kS3);
+    TilingLayout l{{0, 0}, 7, row, 3, {}};
+    const V hexagon{1, 2 * kH};
+    std::vector<V> hexagons;
+    for (int j = -3; j <= 3; ++j)
+        for (int i = -2; i <= 2; ++i) hexagons.push_back(hexagon + double(j) * row + V{7.0 * i, 0});
+    for (const V& c : hexagons)
+        if (c.y >= 0 && c.y < row.y && c.x >= 0 && c.x < 7) l.tiles.push_back(regular(2, c, 6, 90, w));
+    // The bottom row of triangles across the cell, those not inside a hexagon.
+    for (int n = -1; n <= 7; ++n)
+        for (int down = 0; down <= 1; ++down) {
+            const TilingTile t =
+                down ? TilingTile{1, {{n + 0.5, kH}, {n + 1.5, kH}, {n + 1.0, 0}}, {w}}
+                     : TilingTile{0, {{n + 0.0, 0}, {n + 1.0, 0}, {n + 0.5, kH}}, {w}};
+            const V centroid = (t.corners[0] + t.corners[1] + t.corners[2]) / 3.0;
+            if (centroid.x < 0 || centroid.x >= 7) continue;
+            bool covered = false;
+            for (const V& c : hexagons) covered |= glm::length(centroid - c) < kH;
+            if (!covered) l.tiles.push_back(t);
+        }
+    return l;
+}
+
+// Tilings 23 and 24 (4.6.12): a dodecagon with a square on every other edge (the first
+// facing +x) and a hexagon on the others; every bevel is half a side wide.
+TilingLayout dodeca_hex(int kinds, double dodecagon_kind, double hexagon_kind,
+                        std::array<double, 6> square_kinds) {
+    const V d{1.5 + kH, 1 + kS3};
+    TilingLayout l{{0, 0}, 3 + kS3, {1.5 + kH, 1.5 + 1.5 * kS3}, kinds, {}};
+    l.tiles.push_back(regular(dodecagon_kind, d, 12, 0, 0.5));
+    for (int k = 0; k < 6; ++k) {
+        const double a = 60 * k * M_PI / 180, b = (60 * k + 30) * M_PI / 180;
+        l.tiles.push_back(
+            regular(square_kinds[k], d + (1.5 + kH) * V{std::cos(a), std::sin(a)}, 4, 60 * k, 0.5));
+        l.tiles.push_back(
+            regular(hexagon_kind, d + (1 + kS3) * V{std::cos(b), std::sin(b)}, 6, 30, 0.5));
+    }
+    return l;
+}
+
+// Tilings 13 and 14: in a cell of side 2√2, a square of side √2 at the centre and a trapezoid
+// on each of its sides reaching the cell's corners; kinds: square, trapezoids at +x, −x,
+// −z and +z.
+TilingLayout square_internal(int kinds, std::array<double, 5> k) {
+    const double c = 2 * kS2, a = c / 4, b = 3 * c / 4, w = 0.5 / kS2;
+    return {{0, 0}, c, {0, c}, kinds,
+            {rect(k[0], a, a, b, b, w),
+             {k[1], {{b, a}, {c, 0}, {c, c}, {b, b}}, {w}},
+             {k[2], {{a, a}, {a, b}, {0, c}, {0, 0}}, {w}},
+             {k[3], {{a, a}, {0, 0}, {c, 0}, {b, a}}, {w}},
+             {k[4], {{a, b}, {b, b}, {c, c}, {0, c}}, {w}}}};
+}
+
 std::map<int, TilingLayout> make_layouts() {
     std::map<int, TilingLayout> m;
     // 4, lozenge: 60° rhombi all alike.
@@ -149,6 +224,38 @@ std::map<int, TilingLayout> make_layouts() {
     // their two (POV lifts two of the square kinds by 1e-6).
     m[17] = hexa_square_triangle(6, 5, {0, 2.000001, 1.000001, 0, 2.000001, 1.000001},
                                  {4, 3, 4, 3, 4, 3});
+    // 19, hexa_tri_right, and 20, hexa_tri_left: mirror images.
+    m[19] = snub_hexagonal({-2.5, kH});
+    m[20] = snub_hexagonal({2.5, kH});
+    // 13, square_internal: the square 0, the trapezoids along x 2, along z 1.
+    m[13] = square_internal(3, {0, 2, 2, 1, 1});
+    // 14, square_internal_5: each trapezoid its own kind, the square lifted.
+    m[14] = square_internal(5, {4.000001, 0, 1, 2, 3});
+    // 22, dodeca_tri (3.12.12): dodecagons (kind 2, lifted) with triangles between them
+    // pointing up (0) and down (1). POV bevels a dodecagon's edges along x and z over a third
+    // of a side and the others over a triangle's inradius, but the cap above its corners at
+    // 45° and 135° (which it reaches from the next row of its cell) over the inradius
+    // throughout.
+    {
+        const double w = 1 / (2 * kS3), cap = 1.5 + kS3;
+        const V d{1 + kH, 1 + kH};
+        TilingTile lower = regular(2.0000001, d, 12, 0, [&](double a) {
+            return std::fmod(a, 90) == 0 ? 1.0 / 3 : w;
+        });
+        TilingTile upper = regular(2.0000001, d, 12, 0, [&](double a) {
+            return std::fmod(a, 90) == 0 && a != 90 ? 1.0 / 3 : w;
+        });
+        lower.cuts = {{V{1, cap}, V{0, cap}}};
+        upper.cuts = {{V{0, cap}, V{1, cap}}};
+        m[22] = {{0, 0}, 2 + kS3, {1 + kH, cap}, 3,
+                 {lower, upper,
+                  {0, {{-0.5, 0.5}, {0.5, 0.5}, {0, 0.5 + kH}}, {w}},
+                  {1, {{-0.5, cap}, {0.5, cap}, {0, 1.5 + kH}}, {w}}}};
+    }
+    // 23, dodeca_hex: hexagons 0, squares 1, dodecagons 2 (lifted).
+    m[23] = dodeca_hex(3, 2.000001, 0, {1, 1, 1, 1, 1, 1});
+    // 24, dodeca_hex_5: the squares by their three directions.
+    m[24] = dodeca_hex(5, 4.000001, 0, {1, 2, 3, 1, 2, 3});
     // 18, rectangle_pair: 2 × 1 rectangles paired into squares, the pairs alternating.
     m[18] = rectangles({{2, 0, 4, 1}, {2, 1, 4, 2}, {0, 2, 2, 3}, {0, 3, 2, 4}},
                        {{0, 0, 1, 2}, {1, 0, 2, 2}, {2, 2, 3, 4}, {3, 2, 4, 4}});
