@@ -37,7 +37,7 @@ TilingEvaluator::TilingEvaluator(const TilingLayout& layout)
             const glm::dvec2 inward{-along.y, along.x};
             return Edge{inward, glm::dot(inward, a), 1 / width};
         };
-        Tile tile{t.kind, {}, {}};
+        Tile tile{t.kind, t.least, {}, {}};
         for (std::size_t i = 0; i < n; ++i)
             tile.edges.push_back(line(c[i], c[(i + 1) % n], widths[widths.size() == 1 ? 0 : i]));
         for (const auto& cut : t.cuts) tile.cuts.push_back(line(cut[0], cut[1], 1));
@@ -51,7 +51,7 @@ double TilingEvaluator::operator()(double x, double z) const {
     p.x -= std::floor(p.x / period_x_) * period_x_;
     // The tile whose nearest edge is farthest (the one holding the point; on a shared edge
     // either gives the same bevel).
-    double best = -1e300, bevel = 0, kind = 0;
+    double best = -1e300, bevel = 0, kind = 0, least = 0;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
             const glm::dvec2 q = p - double(j) * row_ - glm::dvec2(i * period_x_, 0);
@@ -64,10 +64,10 @@ double TilingEvaluator::operator()(double x, double z) const {
                 }
                 for (const Edge& e : t.cuts)
                     inside = std::min(inside, glm::dot(e.normal, q) - e.offset);
-                if (inside > best) best = inside, bevel = rise, kind = t.kind;
+                if (inside > best) best = inside, bevel = rise, kind = t.kind, least = t.least;
             }
         }
-    return std::clamp((kind + std::clamp(bevel, 0.0, 1.0)) / kinds_, 0.0, 1.0);
+    return std::clamp((kind + std::clamp(bevel, least, 1.0)) / kinds_, 0.0, 1.0);
 }
 
 }  // namespace lumen::render

@@ -2,7 +2,7 @@
 // kind and the width of its bevel at each edge. POV-Ray 3.7's tiling patterns put a point in
 // a tile of kind k among T kinds at (k + bevel) / T, the bevel being 1 on the tile's edges and
 // falling linearly with the distance d from each edge: max(1 − d / width) over the edges,
-// floored at 0 (flat inside where every edge is farther than its width).
+// floored at 0 or a hair above (flat inside where every edge is farther than its width).
 #pragma once
 #include <glm/vec2.hpp>
 #include <array>
@@ -22,6 +22,7 @@ struct TilingTile {
     // Lines that cut the tile without bevelling it (the tile keeps the left of a → b): POV
     // bevels some tiles differently on either side of its folds.
     std::vector<std::array<glm::dvec2, 2>> cuts;
+    double least = 0;  // POV's floor under some bevels (their flats clear a map key at k / T)
 };
 
 struct TilingLayout {
@@ -46,7 +47,7 @@ private:
         double inv_width;
     };
     struct Tile {
-        double kind;
+        double kind, least;
         std::vector<Edge> edges;
         std::vector<Edge> cuts;
     };

@@ -31,6 +31,12 @@ TilingTile rect(double kind, double x0, double z0, double x1, double z1, double 
     return {kind, {{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}}, {width}};
 }
 
+// The tile with POV's floor under its bevel.
+TilingTile floored(TilingTile t, double least) {
+    t.least = least;
+    return t;
+}
+
 // Tilings 6 and 18: 2 × 1 rectangles in a 4 × 4 cell, lying (kind 0) or standing (kind 1).
 TilingLayout rectangles(const std::vector<glm::dvec4>& lying,
                         const std::vector<glm::dvec4>& standing) {
@@ -60,30 +66,6 @@ TilingTile turned(TilingTile t, V centre, double degrees) {
     return t;
 }
 
-// Tilings 16 and 17 (3.4.6.4): a hexagon ringed by a square on each edge and a triangle at
-// each corner; `square_kinds` and `triangle_kinds` give the kinds going round from the square
-// below it and the triangle at its lower left.
-TilingLayout hexa_square_triangle(int kinds, double hexagon_kind,
-                                  std::array<double, 6> square_kinds,
-                                  std::array<double, 6> triangle_kinds) {
-    const double w = 1 / (2 * kS3);
-    const V c{1 + kH, 0.5 + kH};
-    TilingLayout l{{0.5, 0}, 3 + kS3, {1.5 + kH, 0.5 + kH}, kinds, {}};
-    l.tiles.push_back({hexagon_kind,
-                       {c + V{1, 0}, c + V{0.5, kH}, c + V{-0.5, kH}, c + V{-1, 0},
-                        c + V{-0.5, -kH}, c + V{0.5, -kH}},
-                       {w}});
-    const TilingTile square = rect(0, kH + 0.5, -0.5, kH + 1.5, 0.5, w);
-    const TilingTile triangle{0, {{0.5, 0}, {kH + 0.5, 0.5}, {kH + 0.5, -0.5}}, {w}};
-    for (int k = 0; k < 6; ++k) {
-        l.tiles.push_back(turned(square, c, 60 * k));
-        l.tiles.back().kind = square_kinds[k];
-        l.tiles.push_back(turned(triangle, c, 60 * k));
-        l.tiles.back().kind = triangle_kinds[k];
-    }
-    return l;
-}
-
 // A regular polygon of side 1 about `centre` whose first edge faces `first_normal` degrees;
 // edge k faces first_normal + k · 360 / sides and gets width(facing angle in degrees).
 template <class Width>
@@ -101,6 +83,27 @@ TilingTile regular(double kind, V centre, int sides, double first_normal, double
     return regular(kind, centre, sides, first_normal, [&](double) { return width; });
 }
 
+// Tilings 16 and 17 (3.4.6.4): a hexagon ringed by a square on each edge and a triangle at
+// each corner; `square_kinds` and `triangle_kinds` give the kinds going round from the square
+// below it and the triangle at its lower left.
+TilingLayout hexa_square_triangle(int kinds, double hexagon_kind, double hexagon_least,
+                                  std::array<double, 6> square_kinds,
+                                  std::array<double, 6> triangle_kinds) {
+    const double w = 1 / (2 * kS3);
+    const V c{1 + kH, 0.5 + kH};
+    TilingLayout l{{0.5, 0}, 3 + kS3, {1.5 + kH, 0.5 + kH}, kinds, {}};
+    l.tiles.push_back(floored(regular(hexagon_kind, c, 6, 90, w), hexagon_least));
+    const TilingTile square = rect(0, kH + 0.5, -0.5, kH + 1.5, 0.5, w);
+    const TilingTile triangle{0, {{0.5, 0}, {kH + 0.5, 0.5}, {kH + 0.5, -0.5}}, {w}};
+    for (int k = 0; k < 6; ++k) {
+        l.tiles.push_back(turned(square, c, 60 * k));
+        l.tiles.back().kind = square_kinds[k];
+        l.tiles.push_back(turned(triangle, c, 60 * k));
+        l.tiles.back().kind = triangle_kinds[k];
+    }
+    return l;
+}
+
 // Tilings 19 and 20 (3.3.3.3.6): the triangle grid (a corner at the origin, rows of height
 // √3/2) less one hexagon per lattice cell, the cells spanned by (7, 0) and `row`; up-pointing
 // triangles are kind 0, down-pointing 1, hexagons 2.
@@ -112,7 +115,8 @@ TilingLayout snub_hexagonal(V row) {
     for (int j = -3; j <= 3; ++j)
         for (int i = -2; i <= 2; ++i) hexagons.push_back(hexagon + double(j) * row + V{7.0 * i, 0});
     for (const V& c : hexagons)
-        if (c.y >= 0 && c.y < row.y && c.x >= 0 && c.x < 7) l.tiles.push_back(regular(2, c, 6, 90, w));
+        if (c.y >= 0 && c.y < row.y && c.x >= 0 && c.x < 7)
+            l.tiles.push_back(floored(regular(2, c, 6, 90, w), 1e-6));
     // The bottom row of triangles across the cell, those not inside a hexagon.
     for (int n = -1; n <= 7; ++n)
         for (int down = 0; down <= 1; ++down) {
@@ -170,16 +174,17 @@ std::map<int, TilingLayout> make_layouts() {
         const double p = kS2 + 1, c = p / 2, r = kS2 / 2;
         m[7] = {{0, 0}, p, {0, p}, 2,
                 {{0, {{c - r, c}, {c, c - r}, {c + r, c}, {c, c + r}}, {0.5}},
-                 {1, {{c, -0.5}, {c, 0.5}, {0.5, c}, {-0.5, c}, {-c, 0.5}, {-c, -0.5},
-                      {-0.5, -c}, {0.5, -c}},
-                  {0.5}}}};
+                 floored({1, {{c, -0.5}, {c, 0.5}, {0.5, c}, {-0.5, c}, {-c, 0.5}, {-c, -0.5},
+                          {-0.5, -c}, {0.5, -c}},
+                          {0.5}},
+                         2e-12)}};
     }
     // 8, square_triangle: rows of squares (kind 2) between rows of triangles pointing up
     // (0) and down (1), each row of squares shifted half a side from the last.
     {
         const double w = 1 / (2 * kS3);
         m[8] = {{0, 0}, 1, {0.5, 1 + kH}, 3,
-                {rect(2, 0, 0, 1, 1, w),
+                {rect(2.0000001, 0, 0, 1, 1, w),
                  {0, {{0, 1}, {1, 1}, {0.5, 1 + kH}}, {w}},
                  {1, {{0, 1}, {0.5, 1 + kH}, {-0.5, 1 + kH}}, {w}}}};
     }
@@ -188,7 +193,8 @@ std::map<int, TilingLayout> make_layouts() {
     {
         const double w = 1 / (2 * kS3);
         m[9] = {{0.5, 0}, 2, {1, kS3}, 3,
-                {{2, {{0.5, 0}, {1.5, 0}, {2, kH}, {1.5, kS3}, {0.5, kS3}, {0, kH}}, {w}},
+                {floored({2, {{0.5, 0}, {1.5, 0}, {2, kH}, {1.5, kS3}, {0.5, kS3}, {0, kH}}, {w}},
+                         1e-7),
                  {0, {{-0.5, 0}, {0.5, 0}, {0, kH}}, {w}},
                  {1, {{0, kH}, {0.5, kS3}, {-0.5, kS3}}, {w}}}};
     }
@@ -215,14 +221,14 @@ std::map<int, TilingLayout> make_layouts() {
         for (V s : {V{0, 0}, V{2, 1}, V{4, 2}, V{1, 3}, V{3, 4}})
             l.tiles.push_back(rect(0, s.x, s.y, s.x + 1, s.y + 1, 0.5));
         for (V s : {V{1, -1}, V{3, 0}, V{0, 1}, V{2, 2}, V{-1, 3}})
-            l.tiles.push_back(rect(1, s.x, s.y, s.x + 2, s.y + 2, 0.5));
+            l.tiles.push_back(rect(1.00000002, s.x, s.y, s.x + 2, s.y + 2, 0.5));
         m[15] = l;
     }
     // 16, hexa_square_triangle: squares 0, triangles 1, hexagons 2.
-    m[16] = hexa_square_triangle(3, 2, {0, 0, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 1});
+    m[16] = hexa_square_triangle(3, 2, 1e-7, {0, 0, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 1});
     // 17, hexa_square_triangle_6: the squares by their three directions, the triangles by
     // their two (POV lifts two of the square kinds by 1e-6).
-    m[17] = hexa_square_triangle(6, 5, {0, 2.000001, 1.000001, 0, 2.000001, 1.000001},
+    m[17] = hexa_square_triangle(6, 5, 1e-6, {0, 2.000001, 1.000001, 0, 2.000001, 1.000001},
                                  {4, 3, 4, 3, 4, 3});
     // 19, hexa_tri_right, and 20, hexa_tri_left: mirror images.
     m[19] = snub_hexagonal({-2.5, kH});
@@ -231,6 +237,26 @@ std::map<int, TilingLayout> make_layouts() {
     m[13] = square_internal(3, {0, 2, 2, 1, 1});
     // 14, square_internal_5: each trapezoid its own kind, the square lifted.
     m[14] = square_internal(5, {4.000001, 0, 1, 2, 3});
+    // 21, square_tri (3.3.4.3.4): in each quarter of the cell a square turned by 30° (kind 4
+    // where the quarter is mirrored in neither or both axes, 5 otherwise), with triangles
+    // on the quarters' sides, kinds 0-3 by their place.
+    {
+        const double p = 1 + kS3, c = p / 2, w = 1 / (2 * kS3);
+        const auto tri = [&](double kind, V a, V b, V t) { return TilingTile{kind, {a, b, t}, {w}}; };
+        m[21] = {{0, 0}, p, {0, p}, 6,
+                 {floored({4, {{0, 0.5}, {kH, 0}, {c, kH}, {0.5, c}}, {w}}, 1e-6),
+                  floored({5, {{p, 0.5}, {1 + kH, 0}, {c, kH}, {p - 0.5, c}}, {w}}, 1e-6),
+                  floored({5, {{0, p - 0.5}, {kH, p}, {c, 1 + kH}, {0.5, c}}, {w}}, 1e-6),
+                  floored({4, {{p, p - 0.5}, {1 + kH, p}, {c, 1 + kH}, {p - 0.5, c}}, {w}}, 1e-6),
+                  tri(0, {0, -0.5}, {0, 0.5}, {kH, 0}),
+                  tri(2, {p, -0.5}, {p, 0.5}, {p - kH, 0}),
+                  tri(3, {kH, 0}, {1 + kH, 0}, {c, kH}),
+                  tri(1, {kH, p}, {1 + kH, p}, {c, p - kH}),
+                  tri(1, {-0.5, c}, {0.5, c}, {0, 0.5}),
+                  tri(3, {-0.5, c}, {0.5, c}, {0, p - 0.5}),
+                  tri(2, {c, kH}, {c, 1 + kH}, {0.5, c}),
+                  tri(0, {c, kH}, {c, 1 + kH}, {p - 0.5, c})}};
+    }
     // 22, dodeca_tri (3.12.12): dodecagons (kind 2, lifted) with triangles between them
     // pointing up (0) and down (1). POV bevels a dodecagon's edges along x and z over a third
     // of a side and the others over a triangle's inradius, but the cap above its corners at
