@@ -3,6 +3,7 @@
 // any other kind (`gradient x metric 2`: "Keyword 'metric' can only be used in a facets or
 // crackle statement"), and so does lumen; on its own kind the value is kept in the kind's
 // parameters, never read and dropped.
+#include <cmath>
 #include <type_traits>
 
 #include <glm/geometric.hpp>
@@ -98,9 +99,11 @@ glm::dvec2 read_range(ItemCursor& cur, const std::string& w) {
     return {lo, cur.expect_float(w)};
 }
 
-// `tiling N`: POV-Ray refuses N outside 1..27; lumen models all but the Penrose tilings 25-27.
+// `tiling N`: POV-Ray keeps N as a byte (truncated, then modulo 256: 258 is 2) and refuses
+// one outside 1..27; lumen models all but the Penrose tilings 25-27.
 void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern& pattern, pattern::Tiling& t) {
-    t.type = cur.expect_int(kw.keyword);
+    const double n = std::trunc(cur.expect_float(kw.keyword));
+    t.type = std::isfinite(n) ? int(std::fmod(std::fmod(n, 256) + 256, 256)) : 0;
     if (t.type < 1 || t.type > 27) cur.fail(kw.loc, "tiling number must be between 1 and 27");
     if (t.type >= 25)
         mark_unsupported(pattern, "pattern 'tiling " + std::to_string(t.type) + "'", kw.loc);

@@ -123,6 +123,10 @@ TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
               "t.pov:1:25: error: tiling number must be between 1 and 27");
     EXPECT_NE(error_of("sphere { 0, 1 pigment { tiling 0 } }"), "no error");
     EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 24").kind).type, 24);
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 2.7").kind).type, 2);  // POV's byte
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 258").kind).type, 2);
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling -254").kind).type, 2);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { tiling 256 } }"), "no error");
     EXPECT_FALSE(pattern("tiling 7").unsupported);
     ASSERT_TRUE(pattern("tiling 26").unsupported);
     EXPECT_EQ(pattern("tiling 26").unsupported->feature, "pattern 'tiling 26'");
