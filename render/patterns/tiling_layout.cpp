@@ -49,8 +49,8 @@ double TilingEvaluator::operator()(double x, double z) const {
     glm::dvec2 p = glm::dvec2(x, z) + origin_;
     p -= std::floor(p.y / row_.y) * row_;
     p.x -= std::floor(p.x / period_x_) * period_x_;
-    // The tile whose nearest edge is farthest (the one holding the point; on a shared edge
-    // either gives the same bevel).
+    // The tile whose nearest edge is farthest (the one holding the point); on an edge, within
+    // rounding, the tile listed first (the layouts list tiles in POV's order for its ties).
     double best = -1e300, bevel = 0, kind = 0, least = 0;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
@@ -64,7 +64,7 @@ double TilingEvaluator::operator()(double x, double z) const {
                 }
                 for (const Edge& e : t.cuts)
                     inside = std::min(inside, glm::dot(e.normal, q) - e.offset);
-                if (inside > best) best = inside, bevel = rise, kind = t.kind, least = t.least;
+                if (inside > best + 1e-12) best = inside, bevel = rise, kind = t.kind, least = t.least;
             }
         }
     return std::clamp((kind + std::clamp(bevel, least, 1.0)) / kinds_, 0.0, 1.0);

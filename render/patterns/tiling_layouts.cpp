@@ -151,15 +151,15 @@ TilingLayout dodeca_hex(int kinds, double dodecagon_kind, double hexagon_kind,
 
 // Tilings 13 and 14: in a cell of side 2√2, a square of side √2 at the centre and a trapezoid
 // on each of its sides reaching the cell's corners; kinds: square, trapezoids at +x, −x,
-// −z and +z.
+// −z and +z (those along z listed first: POV gives them the diagonals).
 TilingLayout square_internal(int kinds, std::array<double, 5> k) {
     const double c = 2 * kS2, a = c / 4, b = 3 * c / 4, w = 0.5 / kS2;
     return {{0, 0}, c, {0, c}, kinds,
             {rect(k[0], a, a, b, b, w),
-             {k[1], {{b, a}, {c, 0}, {c, c}, {b, b}}, {w}},
-             {k[2], {{a, a}, {a, b}, {0, c}, {0, 0}}, {w}},
              {k[3], {{a, a}, {0, 0}, {c, 0}, {b, a}}, {w}},
-             {k[4], {{a, b}, {b, b}, {c, c}, {0, c}}, {w}}}};
+             {k[4], {{a, b}, {b, b}, {c, c}, {0, c}}, {w}},
+             {k[1], {{b, a}, {c, 0}, {c, c}, {b, b}}, {w}},
+             {k[2], {{a, a}, {a, b}, {0, c}, {0, 0}}, {w}}}};
 }
 
 std::map<int, TilingLayout> make_layouts() {
