@@ -1,25 +1,15 @@
-// The layouts of POV-Ray 3.7's tilings, read off its renders: every tile has side 1 (the
-// rectangles 2 × 1, the large squares of tiling 15 2 × 2); kinds number the tiles as POV
-// colours them. Checked against povray 3.7 to its 16-bit output (tests/patterns/tiling_*.pov).
+// The layouts of POV-Ray 3.7's tilings, worked out from its tiling definitions: every tile
+// has side 1 (the rectangles 2 × 1, the large squares of tiling 15 2 × 2); kinds number the
+// tiles as POV colours them, with its bevel widths, floors and lifts. Each layout matches
+// povray 3.7's 16-bit output pixel for pixel, with smooth maps and with hard keys at every
+// k/T (tests/patterns/tiling_*.pov, render/patterns/tiling_layouts_test.cpp).
 #include "render/patterns/tiling_layouts.hpp"
 
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
-#include <array>
 #include <map>
-
-
-
-
-
-
-
-
-
-
-
-
 
 namespace lumen::render {
 namespace {
