@@ -59,6 +59,9 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
 // kind, or an error when the kind does not take it. False when `kw` is no such modifier.
 bool read_pattern_kind_modifier(ItemCursor& cur, const Item& kw, scene::Pattern& pattern);
 const std::vector<std::string>& pattern_kind_keywords();
+// POV-Ray's checks of a pattern's modifiers once all are read (pavement's numbers), an error
+// at `at` (the end of the block) when they fail.
+void verify_pattern(ItemCursor& cur, SourceLoc at, scene::Pattern& pattern);
 // A value POV-Ray stores in single precision (frequency, phase, turbulence omega and lambda,
 // ...), rounded as it does; values beyond float's range are kept.
 inline double single_precision(double v) {

@@ -81,6 +81,7 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
         }
         cur.fail_unexpected(item, normal_keywords());
     }
+    verify_pattern(cur, cur.here(), n.pattern);
     return std::make_shared<scene::Normal>(std::move(n));
 }
 

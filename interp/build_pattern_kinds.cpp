@@ -3,6 +3,7 @@
 // any other kind (`gradient x metric 2`: "Keyword 'metric' can only be used in a facets or
 // crackle statement"), and so does lumen; on its own kind the value is kept in the kind's
 // parameters, never read and dropped.
+#include <cmath>
 #include <type_traits>
 
 #include <glm/geometric.hpp>
@@ -98,11 +99,18 @@ glm::dvec2 read_range(ItemCursor& cur, const std::string& w) {
     return {lo, cur.expect_float(w)};
 }
 
-// `tiling N`: POV-Ray takes any N outside 1..27 as 1; lumen models 1, 2, 3, 5 and 10.
+// POV-Ray's conversion of a float to a byte: truncated, then modulo 256 (258 is 2, -254 is 2).
+int as_byte(double v) {
+    const double n = std::trunc(v);
+    return std::isfinite(n) ? int(std::fmod(std::fmod(n, 256) + 256, 256)) : 0;
+}
+
+// `tiling N`: POV-Ray keeps N as a byte (truncated, then modulo 256: 258 is 2) and refuses
+// one outside 1..27; lumen models all but the Penrose tilings 25-27.
 void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern& pattern, pattern::Tiling& t) {
-    t.type = cur.expect_int(kw.keyword);
-    if (t.type < 1 || t.type > 27) t.type = 1;
-    if (t.type != 1 && t.type != 2 && t.type != 3 && t.type != 5 && t.type != 10)
+    t.type = as_byte(cur.expect_float(kw.keyword));
+    if (t.type < 1 || t.type > 27) cur.fail(kw.loc, "tiling number must be between 1 and 27");
+    if (t.type >= 25)
         mark_unsupported(pattern, "pattern 'tiling " + std::to_string(t.type) + "'", kw.loc);
 }
 
@@ -176,6 +184,11 @@ const KindModifier kKindModifiers[] = {
              In<pattern::Julia, &pattern::Julia::exterior>,
              In<pattern::Magnet, &pattern::Magnet::exterior>,
              In<pattern::Pavement, &pattern::Pavement::exterior>>},
+    {"number_of_sides", "a pavement pattern",
+     read_in<In<pattern::Pavement, &pattern::Pavement::sides>>},
+    {"number_of_tiles", "a pavement pattern",
+     read_in<In<pattern::Pavement, &pattern::Pavement::tiles>>},
+    {"pattern", "a pavement pattern", read_in<In<pattern::Pavement, &pattern::Pavement::number>>},
     {"control0", "a quilted pattern", read_in<In<pattern::Quilted, &pattern::Quilted::control0>>},
     {"control1", "a quilted pattern", read_in<In<pattern::Quilted, &pattern::Quilted::control1>>},
     {"agate_turb", "an agate pattern", read_in<SingleIn<pattern::Agate, &pattern::Agate::agate_turb>>},
@@ -236,6 +249,39 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
                           [&](pattern::Arguments& a) { read_raw_arguments(cur, a); },
                           [](AnyKind) {}},  // the other kinds take no arguments
                pattern.kind);
+}
+
+// POV-Ray's checks once a pattern's modifiers are read: pavement's sides, tiles and pattern
+// numbers (the layouts per number of tiles: 3 sides 1 1 1 3 4 12, 4 sides 1 1 2 5 12 35, 6
+// sides 1 1 3 7 22), its exterior and interior taken modulo 3, form modulo 4 (4 sides) or 3.
+void verify_pattern(ItemCursor& cur, SourceLoc at, scene::Pattern& pattern) {
+    auto* p = std::get_if<pattern::Pavement>(&pattern.kind);
+    if (!p) return;
+    struct Sides {
+        int sides, forms;
+        std::vector<int> layouts;  // per number of tiles
+        const char* range;
+    };
+    static const Sides kSides[] = {{3, 3, {1, 1, 1, 3, 4, 12}, "(1,1,1,3,4,12)"},
+                                   {4, 4, {1, 1, 2, 5, 12, 35}, "(1,1,2,5,12,35)"},
+                                   {6, 3, {1, 1, 3, 7, 22}, "(1,1,3,7,22)"}};
+    const int sides = as_byte(p->sides), tiles = as_byte(p->tiles), number = as_byte(p->number);
+    const Sides* s = nullptr;
+    for (const Sides& c : kSides)
+        if (c.sides == sides) s = &c;
+    if (!s) cur.fail(at, "number_of_sides of pavement must be 3, 4 or 6");
+    const int most = int(s->layouts.size());
+    if (tiles < 1 || tiles > most)
+        cur.fail(at, "number_of_tiles of pavement must be between 1 and " + std::to_string(most));
+    if (number < 1 || number > s->layouts[tiles - 1])
+        cur.fail(at, std::string("pattern value for pavement is out of range, max per tile: ") +
+                         s->range);
+    p->sides = sides;
+    p->tiles = tiles;
+    p->number = number;
+    p->exterior = as_byte(p->exterior) % 3;
+    p->interior = as_byte(p->interior) % 3;
+    p->form = as_byte(p->form) % s->forms;
 }
 
 bool read_pattern_kind_modifier(ItemCursor& cur, const Item& kw, scene::Pattern& pattern) {

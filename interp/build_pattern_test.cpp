@@ -101,7 +101,7 @@ TEST_F(BuildPattern, FractalArguments) {
     EXPECT_NE(error_of("sphere { 0, 1 pigment { magnet 1 mandel 9 exponent 3 } }"), "no error");
 }
 
-// slope's two forms, tiling's number (the unmodelled tilings are reported), quilted's
+// slope's two forms, tiling's number (1..27; the Penrose tilings are reported), quilted's
 // skipped frequency, and the voxels of a df3 file found beside the scene.
 TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
     const auto pattern = [&](const std::string& p) {
@@ -119,10 +119,43 @@ TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
     EXPECT_DOUBLE_EQ(full.altitude_length, 3);
     EXPECT_DOUBLE_EQ(full.altitude_range.x, 1);
     EXPECT_NE(error_of("sphere { 0, 1 pigment { slope { y extra } } }"), "no error");
-    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 30").kind).type, 1);
-    EXPECT_FALSE(pattern("tiling 3").unsupported);
-    ASSERT_TRUE(pattern("tiling 7").unsupported);
-    EXPECT_EQ(pattern("tiling 7").unsupported->feature, "pattern 'tiling 7'");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { tiling 28 } }"),
+              "t.pov:1:25: error: tiling number must be between 1 and 27");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { tiling 0 } }"), "no error");
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 24").kind).type, 24);
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 2.7").kind).type, 2);  // POV's byte
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling 258").kind).type, 2);
+    EXPECT_EQ(std::get<pattern::Tiling>(pattern("tiling -254").kind).type, 2);
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { tiling 256 } }"), "no error");
+    EXPECT_FALSE(pattern("tiling 7").unsupported);
+    ASSERT_TRUE(pattern("tiling 26").unsupported);
+    EXPECT_EQ(pattern("tiling 26").unsupported->feature, "pattern 'tiling 26'");
+    // pavement: POV's bytes and ranges, checked once the block is read (measured on povray)
+    const auto pave = std::get<pattern::Pavement>(pattern("pavement").kind);
+    EXPECT_EQ(pave.sides, 3);
+    EXPECT_EQ(pave.tiles, 1);
+    EXPECT_EQ(pave.number, 1);
+    const auto p4 = std::get<pattern::Pavement>(
+        pattern("pavement number_of_sides 260 number_of_tiles 6.9 pattern 35 exterior 5 "
+                "interior 7 form 9").kind);
+    EXPECT_EQ(p4.sides, 4);
+    EXPECT_EQ(p4.tiles, 6);
+    EXPECT_EQ(p4.number, 35);
+    EXPECT_EQ(p4.exterior, 2);
+    EXPECT_EQ(p4.interior, 1);
+    EXPECT_EQ(p4.form, 1);
+    ASSERT_TRUE(pattern("pavement").unsupported);
+    EXPECT_EQ(pattern("pavement").unsupported->feature, "pattern 'pavement'");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { pavement number_of_sides 5 } }"),
+              "t.pov:1:50: error: number_of_sides of pavement must be 3, 4 or 6");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { pavement number_of_sides 6 number_of_tiles 6 } }"),
+              "no error");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { pavement number_of_tiles 4 pattern 4 } }"),
+              "no error");  // 3 sides, 4 tiles: 3 layouts
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { pavement number_of_sides 4 number_of_tiles 4 "
+                       "pattern 5 } }"),
+              "no error");
+    EXPECT_NE(error_of("sphere { 0, 1 pigment { gradient x pattern 2 } }"), "no error");
     EXPECT_DOUBLE_EQ(pattern("quilted").frequency, 0);
     EXPECT_DOUBLE_EQ(pattern("quilted frequency 2").frequency, 2);
     const auto df3 = std::get<pattern::DensityFile>(

@@ -107,6 +107,7 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
         }
         cur.fail_unexpected(item, pigment_keywords());
     }
+    verify_pattern(cur, cur.here(), p.pattern);
     if (std::holds_alternative<scene::pattern::Average>(p.pattern.kind) && p.pigment_map.empty())
         cur.fail(p.loc, "an average pigment needs a pigment_map");  // as POV-Ray refuses
     return std::make_shared<scene::Pigment>(std::move(p));

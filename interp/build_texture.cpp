@@ -106,6 +106,7 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
         }
         cur.fail_unexpected(item, texture_keywords());
     }
+    verify_pattern(cur, cur.here(), top.pattern);
     below.push_back(std::make_shared<scene::Texture>(std::move(top)));
     return below;
 }

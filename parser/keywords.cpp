@@ -80,7 +80,7 @@ const std::vector<std::string>& reserved_words() {
     "minimum_reuse", "mm_per_unit", "mod", "mortar", "natural_spline", "nearest_count", "no",
     "no_bump_scale", "no_image", "no_radiosity", "no_reflection", "no_shadow",
     "noise_generator", "normal", "normal_indices", "normal_map", "normal_vectors", "now",
-    "number_of_waves", "object", "octaves", "off", "offset", "omega", "omnimax", "on", "once",
+    "number_of_sides", "number_of_tiles", "number_of_waves", "object", "octaves", "off", "offset", "omega", "omnimax", "on", "once",
     "onion", "open", "orient", "orientation", "orthographic", "ovus", "panoramic", "parallel",
     "parametric", "pass_through", "pattern", "pavement", "perspective", "pgm", "phase", "phong",
     "phong_size", "photons", "pi", "pigment", "pigment_map", "pigment_pattern", "planar",

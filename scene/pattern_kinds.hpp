@@ -146,13 +146,16 @@ struct Magnet : Fractal {
         f("julia", s.c);
     }
 };
-struct Pavement : Arguments {
-    double form = 0, interior = 0, exterior = 0;
+// `pavement`: POV-Ray keeps each modifier as a byte (parser: interp/build_pattern_kinds.cpp).
+struct Pavement {
+    double sides = 3, tiles = 1, number = 1, exterior = 0, interior = 0, form = 0;
     template <class Self, class F> static void fields(Self& s, F&& f) {
-        Arguments::fields(s, f);
-        f("form", s.form);
-        f("interior", s.interior);
+        f("number_of_sides", s.sides);
+        f("number_of_tiles", s.tiles);
+        f("pattern", s.number);
         f("exterior", s.exterior);
+        f("interior", s.interior);
+        f("form", s.form);
     }
 };
 // `slope <v>` or `slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }`: how far
@@ -176,7 +179,7 @@ struct Slope {
         f("altitude_range", s.altitude_range);
     }
 };
-// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1, 2, 3, 5 and 10).
+// `tiling N`: one of POV-Ray's 27 plane tilings (lumen renders 1-24).
 struct Tiling {
     int type = 1;
     template <class Self, class F> static void fields(Self& s, F&& f) { f("tiling", s.type); }

@@ -2,9 +2,12 @@
 // against povray renders (tests/patterns/cubic.pov, tiling.pov).
 #include "render/patterns/tilings.hpp"
 
+#include "render/patterns/tiling_layouts.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace lumen::render {
 namespace {
@@ -124,6 +127,14 @@ double evaluate(const scene::pattern::Cubic&, const glm::dvec3& p) {
 }
 
 double evaluate(const scene::pattern::Tiling& k, const glm::dvec3& p) {
+    // The layouts' evaluators, compiled once.
+    static const auto evaluators = [] {
+        std::array<std::optional<TilingEvaluator>, 28> e;
+        for (int n = 0; n < 28; ++n)
+            if (const TilingLayout* l = tiling_layout(n)) e[n].emplace(*l);
+        return e;
+    }();
+    if (k.type >= 0 && k.type < 28 && evaluators[k.type]) return (*evaluators[k.type])(p.x, p.z);
     switch (k.type) {
         case 2: return hexagon_tiles(p.x, p.z);
         case 3: return triangle_tiles(p.x, p.z);
