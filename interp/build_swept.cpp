@@ -142,11 +142,13 @@ scene::ObjectPtr build_sor(ItemCursor& cur) {
     if (n < 4) cur.fail(cur.here(), "a surface of revolution must have at least four points");
     std::vector<SourceLoc> where;
     sor.points = read_points(cur, n, where);
-    // POV-Ray's checks: no negative radius, heights rising strictly from the second point on,
-    // and the first point's height apart from the third's (it sets the first slope).
+    // POV-Ray's checks: no negative radius, heights rising strictly from the second point to
+    // the last but one, the last not below it (measured: objects/sor1.pov ends on two points
+    // at the same height), and the first point's height apart from the third's (it sets the
+    // first slope).
     const auto& p = sor.points;
     for (int i = 0; i < n; ++i) {
-        const bool rises = i < 2 || p[i].y > p[i - 1].y;
+        const bool rises = i < 2 || p[i].y > p[i - 1].y || (i == n - 1 && p[i].y == p[i - 1].y);
         if (p[i].x < 0 || !rises || (i == 2 && p[0].y == p[2].y))
             cur.fail(where[i], "incorrect point in surface of revolution" +
                                    std::string(p[i].x < 0 ? ": negative radius"
