@@ -68,6 +68,11 @@ TEST_F(BuildSwept, UnclosedQuadraticPrismIsRejected) {
     EXPECT_NE(e.find("t.pov:1:63: error: too few points in prism"), std::string::npos) << e;
     EXPECT_EQ(error_of("prism { quadratic_spline 0, 1, 5, <0,0>, <1,0>, <0,1>, <-1,0>, <1,0> }"),
               "no error");
+    // Closed, then points that make no segment: not closed either (measured).
+    EXPECT_NE(error_of("prism { cubic_spline 0, 1, 9, <0,-1>, <1,0>, <0,1>, <-1,0>, <0,-1>, "
+                       "<1,0>, <0,1>, <5,5>, <6,6> }")
+                  .find("too few points in prism"),
+              std::string::npos);
 }
 
 TEST_F(BuildSwept, SorPointsMustRise) {

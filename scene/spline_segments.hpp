@@ -52,9 +52,9 @@ inline SplineWalk prism_walk(SplineKind kind, const std::vector<glm::dvec2>& p) 
     }
     const int lead = kind == SplineKind::Linear ? 0 : 1;  // index of the first curve point
     const int jump = kind == SplineKind::Linear ? 1 : kind == SplineKind::Quadratic ? 2 : 3;
-    int first = lead;
+    int first = lead, i = 0;
     walk.closed = false;
-    for (int i = 0; i + per - 1 < n;) {
+    while (i + per - 1 < n) {
         walk.starts.push_back(i);
         const int end = i + lead + 1;  // where this segment ends
         if (same_point(p[end], p[first])) {
@@ -66,6 +66,9 @@ inline SplineWalk prism_walk(SplineKind kind, const std::vector<glm::dvec2>& p) 
             walk.closed = false;
         }
     }
+    // Points left over after the last closed sub-shape leave it unclosed too (measured: a
+    // closed cubic outline followed by three more points is "not closed").
+    walk.closed = walk.closed && i == n;
     return walk;
 }
 
