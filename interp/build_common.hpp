@@ -104,6 +104,9 @@ scene::ObjectPtr build_csg(ItemCursor& cur);
 scene::ObjectPtr build_mesh(ItemCursor& cur);   // build_mesh.cpp
 scene::ObjectPtr build_mesh2(ItemCursor& cur);
 scene::ObjectPtr build_text(ItemCursor& cur);   // build_text.cpp
+scene::ObjectPtr build_prism(ItemCursor& cur);  // build_swept.cpp
+scene::ObjectPtr build_lathe(ItemCursor& cur);
+scene::ObjectPtr build_sor(ItemCursor& cur);
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
 bool is_unsupported_shape(const std::string& keyword);
 // Reads the object modifiers that follow a shape's own arguments. `extra` handles

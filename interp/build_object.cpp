@@ -169,6 +169,16 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Text>, ItemCursor& cur
     return build_text(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::Prism>, ItemCursor& cur) {
+    return build_prism(cur);
+}
+scene::ObjectPtr read_primitive(std::type_identity<scene::Lathe>, ItemCursor& cur) {
+    return build_lathe(cur);
+}
+scene::ObjectPtr read_primitive(std::type_identity<scene::Sor>, ItemCursor& cur) {
+    return build_sor(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -293,6 +293,41 @@ struct ShapeDumper {
         }
         o.put("glyphs", gs);
     }
+    // prism, lathe and sor: the spline, the points as read (a linear prism closed) and flags.
+    static Json points2(const std::vector<glm::dvec2>& pts) {
+        Json a = Json::array();
+        for (const auto& p : pts) a.push(Json::array().push(Json::num(p.x)).push(Json::num(p.y)));
+        return a;
+    }
+    static Json spline(scene::SplineKind k) {
+        static const char* names[] = {"linear_spline", "quadratic_spline", "cubic_spline",
+                                      "bezier_spline"};
+        return Json::str(names[static_cast<int>(k)]);
+    }
+    void operator()(const scene::Prism& p) const {
+        const scene::Prism d;
+        o.put("type", Json::str("prism"));
+        o.put("spline", spline(p.spline));
+        o.put("sweep", Json::str(p.conic ? "conic_sweep" : "linear_sweep"));
+        o.put("height1", Json::num(p.height1));
+        o.put("height2", Json::num(p.height2));
+        o.put("points", points2(p.points));
+        put_if(o, "open", p.open, d.open);
+        put_if(o, "sturm", p.sturm, d.sturm);
+        put_if(o, "closed", p.closed, d.closed);
+    }
+    void operator()(const scene::Lathe& l) const {
+        o.put("type", Json::str("lathe"));
+        o.put("spline", spline(l.spline));
+        o.put("points", points2(l.points));
+        put_if(o, "sturm", l.sturm, false);
+    }
+    void operator()(const scene::Sor& s) const {
+        o.put("type", Json::str("sor"));
+        o.put("points", points2(s.points));
+        put_if(o, "open", s.open, false);
+        put_if(o, "sturm", s.sturm, false);
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

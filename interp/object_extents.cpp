@@ -163,6 +163,37 @@ struct ShapeBoxes {
         e.max.z = std::max(0.0, t.thickness) + 1e-6;
         return {e};
     }
+    // prism, lathe, sor: boxed by their curve points (the first and last points of quadratic
+    // and cubic splines, and a sor's, only steer the curve), measured on linear, cubic,
+    // conic and sor cases. A conic prism's outline is scaled by its larger height.
+    ShapeBox operator()(const scene::Prism& p) const {
+        const Extents r = curve_range(p.spline, p.points);
+        const double top = std::max(std::abs(p.height1), std::abs(p.height2));
+        const double k = p.conic ? top : 1;
+        return {{{r.min.x * k, p.height1, r.min.y * k}, {r.max.x * k, p.height2, r.max.y * k}}};
+    }
+    ShapeBox operator()(const scene::Lathe& l) const {
+        return {turned(curve_range(l.spline, l.points))};
+    }
+    ShapeBox operator()(const scene::Sor& s) const {
+        std::vector<glm::dvec3> on;
+        for (size_t i = 1; i + 1 < s.points.size(); ++i) on.emplace_back(s.points[i], 0);
+        if (on.empty()) return {{glm::dvec3(0), glm::dvec3(0)}};
+        return {turned(point_range(on, 0))};
+    }
+    static Extents curve_range(scene::SplineKind kind, const std::vector<glm::dvec2>& pts) {
+        const size_t skip = kind == scene::SplineKind::Quadratic || kind == scene::SplineKind::Cubic;
+        const size_t tail = kind == scene::SplineKind::Cubic;
+        std::vector<glm::dvec3> on;
+        for (size_t i = skip; i + tail < pts.size(); ++i) on.emplace_back(pts[i], 0);
+        if (on.empty()) return {glm::dvec3(0), glm::dvec3(0)};
+        return point_range(on, 0);
+    }
+    // A curve of <radius, height> points turned about y.
+    static Extents turned(const Extents& r) {
+        const double rmax = std::max(std::abs(r.min.x), std::abs(r.max.x));
+        return {{-rmax, r.min.y, -rmax}, {rmax, r.max.y, rmax}};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

@@ -106,4 +106,13 @@ int solve_polynomial_in(const double* c, int n, double lo, double hi, double* ro
     return m;
 }
 
+int significant_degree(const double* c, int n, double tiny) {
+    while (n > 0 && std::abs(c[n]) < tiny) --n;
+    return n;
+}
+
+int solve_significant_in(const double* c, int n, double lo, double hi, double* roots) {
+    return solve_polynomial_in(c, significant_degree(c, n), lo, hi, roots);
+}
+
 }  // namespace lumen::render

@@ -17,4 +17,12 @@ double eval_poly(const double* c, int n, double t);
 // changes sign there. Returns the count (<= n).
 int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots);
 
+// The degree of c (lowest power first) once the leading coefficients below `tiny` in
+// magnitude are dropped, as POV-Ray's polynomial solver drops them (an absolute test, so a
+// nearly degenerate cubic is solved as the quadratic or line it nearly is).
+int significant_degree(const double* c, int n, double tiny = 1e-10);
+
+// solve_polynomial_in after POV-Ray's leading-coefficient test (significant_degree).
+int solve_significant_in(const double* c, int n, double lo, double hi, double* roots);
+
 }  // namespace lumen::render

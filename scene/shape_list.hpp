@@ -24,7 +24,10 @@
     X(Triangle, "triangle", "smooth_triangle") \
     X(Polygon, "polygon")                      \
     X(Mesh, "mesh", "mesh2")                   \
-    X(Text, "text")
+    X(Text, "text")                            \
+    X(Prism, "prism")                          \
+    X(Lathe, "lathe")                          \
+    X(Sor, "sor")
 
 namespace lumen::scene {
 
@@ -51,8 +54,8 @@ inline constexpr std::string_view kShapeKeywords[] = {
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
     "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal",
-    "lathe", "lemon", "light_group", "ovus", "parametric", "poly", "polynomial", "prism",
-    "quadric", "quartic", "sor", "sphere_sweep", "superellipsoid"};
+    "lemon", "light_group", "ovus", "parametric", "poly", "polynomial",
+    "quadric", "quartic", "sphere_sweep", "superellipsoid"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -111,6 +111,38 @@ struct Text {
                  f("offset", s.offset), f("glyphs", s.glyphs))
 };
 
+// The splines of prism and lathe (POV-Ray's keywords linear_spline ... bezier_spline).
+enum class SplineKind { Linear, Quadratic, Cubic, Bezier };
+
+// prism { [spline] [sweep] H1, H2, N, <u,v>... [open] [sturm] }: the 2-D points <u,v> are
+// object (x = u, z = v), swept along y from height1 to height2 (height1 <= height2).
+// A linear prism's sub-polygons are closed as read (POV-Ray appends the start point).
+struct Prism {
+    SplineKind spline = SplineKind::Linear;
+    bool conic = false;  // conic_sweep: the cone from the origin through the curve at y = 1
+    double height1 = 0, height2 = 1;
+    std::vector<glm::dvec2> points;
+    bool open = false, sturm = false;
+    bool closed = true;  // false: an unclosed Bezier prism, which POV-Ray keeps but never hits
+    LUMEN_FIELDS(f("spline", s.spline), f("conic", s.conic), f("height1", s.height1),
+                 f("height2", s.height2), f("points", s.points), f("open", s.open),
+                 f("sturm", s.sturm), f("closed", s.closed))
+};
+// lathe { [spline] N, <r,y>... [sturm] }: the curve of points <radius, height> turned about y.
+struct Lathe {
+    SplineKind spline = SplineKind::Linear;
+    std::vector<glm::dvec2> points;
+    bool sturm = false;
+    LUMEN_FIELDS(f("spline", s.spline), f("points", s.points), f("sturm", s.sturm))
+};
+// sor { N, <r,y>... [open] [sturm] }: r^2 a cubic in y through points 1..N-2 (the first and
+// last only steer the slopes), capped at both ends unless open.
+struct Sor {
+    std::vector<glm::dvec2> points;
+    bool open = false, sturm = false;
+    LUMEN_FIELDS(f("points", s.points), f("open", s.open), f("sturm", s.sturm))
+};
+
 #undef LUMEN_FIELDS
 
 }  // namespace lumen::scene

@@ -31,6 +31,7 @@ struct ShapeHit {
 // (POV-Ray's per-object DEPTH_TOLERANCE values).
 constexpr double kDepthDefault = 1e-6;  // sphere, plane, box, disc, triangle, mesh, ...
 constexpr double kDepthTorus = 1e-4;
+constexpr double kDepthSwept = 1e-4;  // prism, lathe, sor
 constexpr double kDepthPolygon = 1e-8;
 
 // The render side of scene shape T. Only the specialisations exist, one in each shape's

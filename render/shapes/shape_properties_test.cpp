@@ -74,6 +74,30 @@ scene::Text sample_shape(std::type_identity<scene::Text>) {
     return t;
 }
 
+// A Catmull-Rom diamond with a smaller one inside it as a hole, swept from -0.5 to 0.7.
+scene::Prism sample_shape(std::type_identity<scene::Prism>) {
+    scene::Prism p;
+    p.spline = scene::SplineKind::Cubic;
+    p.height1 = -0.5;
+    p.height2 = 0.7;
+    for (double r : {1.0, 0.3})
+        for (glm::dvec2 q : {glm::dvec2{0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 0}, {0, 1}})
+            p.points.push_back(r * q);
+    return p;
+}
+// A closed Catmull-Rom loop clear of the axis, turned: a lumpy ring (degree 6 in w).
+scene::Lathe sample_shape(std::type_identity<scene::Lathe>) {
+    scene::Lathe l;
+    l.spline = scene::SplineKind::Cubic;
+    l.points = {{0.2, 0.8}, {0.3, -0.8}, {1, -0.5}, {0.8, 0.6}, {0.2, 0.8}, {0.3, -0.8}, {1, -0.5}};
+    return l;
+}
+scene::Sor sample_shape(std::type_identity<scene::Sor>) {  // a capped vase
+    scene::Sor s;
+    s.points = {{0, -1.2}, {0.5, -1}, {0.8, 0}, {0.4, 1}, {0.6, 1.3}};
+    return s;
+}
+
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
 struct WorldHit {
