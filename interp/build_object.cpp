@@ -169,6 +169,47 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Text>, ItemCursor& cur
     return build_text(cur);
 }
 
+// poly { Order, <coefficients> [sturm] }, cubic { <20> }, quartic { <35> }: exactly the
+// number of terms of the order, as POV-Ray requires.
+scene::ObjectPtr read_primitive(std::type_identity<scene::Poly>, ItemCursor& cur) {
+    scene::Poly p;
+    if (cur.what() == "cubic") {
+        p.order = 3;
+    } else if (cur.what() == "quartic") {
+        p.order = 4;
+    } else {
+        SourceLoc loc = cur.here();
+        p.order = cur.expect_int("");
+        if (p.order < 2 || p.order > 35)
+            cur.fail(loc, "poly order must be 2 to 35, not " + std::to_string(p.order));
+    }
+    SourceLoc loc = cur.here();
+    p.coeffs = cur.expect_vecn("");
+    const size_t terms = scene::Poly::term_count(p.order);
+    if (p.coeffs.size() != terms)
+        cur.fail(loc, "a " + cur.what() + " of order " + std::to_string(p.order) + " needs " +
+                          std::to_string(terms) + " coefficients, found " +
+                          std::to_string(p.coeffs.size()));
+    return object_with_flag(cur, p, "sturm", &scene::Poly::sturm);
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Quadric>, ItemCursor& cur) {
+    scene::Quadric q;
+    q.square = cur.expect_vector("");
+    q.mixed = cur.expect_vector("");
+    q.linear = cur.expect_vector("");
+    q.constant = cur.expect_float("");
+    return share(object_of(cur, q));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemCursor& cur) {
+    SourceLoc loc = cur.here();
+    std::vector<double> en = cur.expect_vecn("");
+    if (en.size() == 1) en.push_back(en[0]);  // a float is <f, f>, as for any 2-D vector
+    if (en.size() != 2) cur.fail(loc, "superellipsoid needs a 2-D vector <e, n>");
+    return share(object_of(cur, scene::Superellipsoid{en[0], en[1]}));
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }
@@ -189,6 +230,7 @@ scene::ObjectPtr read_object_copy(ItemCursor& cur) {
         if (item.kind != Item::Kind::Keyword) return false;
         if (item.keyword == "sturm") {
             if (auto* t = std::get_if<scene::Torus>(&obj.shape)) t->sturm = true;
+            if (auto* p = std::get_if<scene::Poly>(&obj.shape)) p->sturm = true;
             return true;
         }
         if (item.keyword != "open") return false;

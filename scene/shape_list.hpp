@@ -24,7 +24,10 @@
     X(Triangle, "triangle", "smooth_triangle") \
     X(Polygon, "polygon")                      \
     X(Mesh, "mesh", "mesh2")                   \
-    X(Text, "text")
+    X(Text, "text")                            \
+    X(Poly, "poly", "cubic", "quartic")        \
+    X(Quadric, "quadric")                      \
+    X(Superellipsoid, "superellipsoid")
 
 namespace lumen::scene {
 
@@ -50,9 +53,8 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal",
-    "lathe", "lemon", "light_group", "ovus", "parametric", "poly", "polynomial", "prism",
-    "quadric", "quartic", "sor", "sphere_sweep", "superellipsoid"};
+    "bicubic_patch", "blob", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
+    "light_group", "ovus", "parametric", "polynomial", "prism", "sor", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -264,6 +264,10 @@ struct ShapeMesher {
     void operator()(const scene::Mesh& s) const { mesh_faces(s, b); }
     // Glyph outlines are not meshed: text only occludes.
     NotMeshed operator()(const scene::Text&) const { return {}; }
+    // Implicit surfaces are not meshed: they only occlude.
+    NotMeshed operator()(const scene::Poly&) const { return {}; }
+    NotMeshed operator()(const scene::Quadric&) const { return {}; }
+    NotMeshed operator()(const scene::Superellipsoid&) const { return {}; }
     // Unions are meshed through by the caller; other CSG only occludes.
     NotMeshed operator()(const scene::Csg&) const { return {}; }
     NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }
