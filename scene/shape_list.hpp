@@ -25,7 +25,7 @@
     X(Polygon, "polygon")                      \
     X(Mesh, "mesh", "mesh2")                   \
     X(Text, "text")                            \
-    X(Poly, "poly", "cubic", "quartic")        \
+    X(Poly, "poly", "cubic", "quartic", "polynomial") \
     X(Quadric, "quadric")                      \
     X(Superellipsoid, "superellipsoid")
 
@@ -54,7 +54,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
     "bicubic_patch", "blob", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
-    "light_group", "ovus", "parametric", "polynomial", "prism", "sor", "sphere_sweep"};
+    "light_group", "ovus", "parametric", "prism", "sor", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>
