@@ -53,6 +53,7 @@ bench: configure
 	cmake --build $(BUILD) --target lumen parse_includes -j$(JOBS)
 	$(BUILD)/bench/parse_includes
 	bench/render_vs_povray.sh $(BUILD)/lumen
+	bench/render_vs_povray.sh $(BUILD)/lumen $$(nproc) 3 bench/algebraic.pov
 
 # Radiosity error against time (about 18 minutes on a shared 2-core machine; writes
 # docs/radiosity_*.csv and .png).

@@ -33,6 +33,9 @@ glm::dvec3 unit_or_fail(ItemCursor& cur, const glm::dvec3& v, SourceLoc loc, con
     return v / len;
 }
 
+// Where the next argument is written, for its error messages.
+SourceLoc next_loc(ItemCursor& cur) { return cur.at_end() ? cur.here() : cur.peek().loc; }
+
 glm::dvec3 read_point(ItemCursor& cur) {  // 2-D points (polygon) get z = 0
     std::vector<double> c = cur.expect_vecn("");
     if (c.size() == 1) return glm::dvec3(c[0]);
@@ -179,6 +182,81 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Sor>, ItemCursor& cur)
     return build_sor(cur);
 }
 
+// polynomial { Order, xyz(i, j, k): c ... }: named terms, the others 0; a term written again
+// replaces the earlier value (measured with POV-Ray 3.7).
+scene::ObjectPtr read_polynomial(ItemCursor& cur) {
+    scene::Poly p;
+    SourceLoc loc = next_loc(cur);
+    p.order = cur.expect_int("");
+    if (p.order < 2 || p.order > 35)
+        cur.fail(loc, "polynomial order must be 2 to 35, not " + std::to_string(p.order));
+    p.coeffs.assign(scene::Poly::term_count(p.order), 0.0);
+    auto term = [&](const Item& item) {
+        if (item.kind != Item::Kind::Keyword || item.keyword != "xyz") return false;
+        const Item& value = cur.next();
+        const std::vector<double>& t = value.value.as<VecN>().c;
+        int power[3];
+        for (int a = 0; a < 3; ++a) {
+            power[a] = int(t[a]);
+            if (power[a] < 0 || double(power[a]) != t[a])
+                cur.fail(item.loc, "xyz powers must be whole numbers from 0");
+        }
+        if (power[0] + power[1] + power[2] > p.order)
+            cur.fail(item.loc, "the term's powers add up to more than the order " +
+                                   std::to_string(p.order));
+        p.coeffs[scene::Poly::term_index(p.order, power[0], power[1], power[2])] = t[3];
+        return true;
+    };
+    bool sturm = false;
+    auto extra = [&](const Item& item) { return term(item) || flag_keyword("sturm", sturm)(item); };
+    scene::Object obj = object_of(cur, p, extra, {"xyz", "sturm"});
+    std::get<scene::Poly>(obj.shape).coeffs = p.coeffs;
+    std::get<scene::Poly>(obj.shape).sturm = sturm;
+    return share(std::move(obj));
+}
+
+// poly { Order, <coefficients> [sturm] }, cubic { <20> }, quartic { <35> }: exactly the
+// number of terms of the order, as POV-Ray requires.
+scene::ObjectPtr read_primitive(std::type_identity<scene::Poly>, ItemCursor& cur) {
+    if (cur.what() == "polynomial") return read_polynomial(cur);
+    scene::Poly p;
+    if (cur.what() == "cubic") {
+        p.order = 3;
+    } else if (cur.what() == "quartic") {
+        p.order = 4;
+    } else {
+        SourceLoc loc = next_loc(cur);
+        p.order = cur.expect_int("");
+        if (p.order < 2 || p.order > 35)
+            cur.fail(loc, "poly order must be 2 to 35, not " + std::to_string(p.order));
+    }
+    SourceLoc loc = next_loc(cur);
+    p.coeffs = cur.expect_vecn("");
+    const size_t terms = scene::Poly::term_count(p.order);
+    if (p.coeffs.size() != terms)
+        cur.fail(loc, "a " + cur.what() + " of order " + std::to_string(p.order) + " needs " +
+                          std::to_string(terms) + " coefficients, found " +
+                          std::to_string(p.coeffs.size()));
+    return object_with_flag(cur, p, "sturm", &scene::Poly::sturm);
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Quadric>, ItemCursor& cur) {
+    scene::Quadric q;
+    q.square = cur.expect_vector("");
+    q.mixed = cur.expect_vector("");
+    q.linear = cur.expect_vector("");
+    q.constant = cur.expect_float("");
+    return share(object_of(cur, q));
+}
+
+scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemCursor& cur) {
+    SourceLoc loc = next_loc(cur);
+    std::vector<double> en = cur.expect_vecn("");
+    if (en.size() == 1) en.push_back(en[0]);  // a float is <f, f>, as for any 2-D vector
+    if (en.size() != 2) cur.fail(loc, "superellipsoid needs a 2-D vector <e, n>");
+    return share(object_of(cur, scene::Superellipsoid{en[0], en[1]}));
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }
@@ -199,6 +277,7 @@ scene::ObjectPtr read_object_copy(ItemCursor& cur) {
         if (item.kind != Item::Kind::Keyword) return false;
         if (item.keyword == "sturm") {
             if (auto* t = std::get_if<scene::Torus>(&obj.shape)) t->sturm = true;
+            if (auto* p = std::get_if<scene::Poly>(&obj.shape)) p->sturm = true;
             return true;
         }
         if (item.keyword != "open") return false;

@@ -328,6 +328,27 @@ struct ShapeDumper {
         put_if(o, "open", s.open, false);
         put_if(o, "sturm", s.sturm, false);
     }
+    // The order and every coefficient in POV-Ray's term order.
+    void operator()(const scene::Poly& p) const {
+        o.put("type", Json::str("poly"));
+        o.put("order", Json::num(p.order));
+        Json cs = Json::array();
+        for (double c : p.coeffs) cs.push(Json::num(c));
+        o.put("coeffs", cs);
+        put_if(o, "sturm", p.sturm, false);
+    }
+    void operator()(const scene::Quadric& q) const {
+        o.put("type", Json::str("quadric"));
+        o.put("square", vec(q.square));
+        o.put("mixed", vec(q.mixed));
+        o.put("linear", vec(q.linear));
+        o.put("constant", Json::num(q.constant));
+    }
+    void operator()(const scene::Superellipsoid& s) const {
+        o.put("type", Json::str("superellipsoid"));
+        o.put("e", Json::num(s.e));
+        o.put("n", Json::num(s.n));
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

@@ -137,7 +137,12 @@ Value Evaluator::eval(const ast::Node& e) {
         case Kind::Ident: return lookup(e);
         case Kind::Vector: {
             size_t n = e.children.size();
-            if (n < 2 || (n > 5 && n != 12))
+            // poly, cubic and quartic read their coefficients as one long vector literal.
+            const bool coefficients =
+                !open_blocks_.empty() && (open_blocks_.back() == "poly" ||
+                                          open_blocks_.back() == "cubic" ||
+                                          open_blocks_.back() == "quartic");
+            if (n < 2 || (n > 5 && n != 12 && !coefficients))
                 throw LumenError(e.loc, "a vector needs 2 to 5 components, found " + std::to_string(n));
             VecN v;
             for (const auto& c : e.children) v.c.push_back(eval_float(*c));

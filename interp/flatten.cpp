@@ -84,6 +84,17 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
         case Kind::Semicolon:
         case Kind::Null:
             return Flow::Normal;
+        case Kind::PolyTerm: {  // the keyword `xyz`, then <i, j, k, c>
+            Item kw;
+            kw.kind = Item::Kind::Keyword;
+            kw.keyword = "xyz";
+            kw.loc = node.loc;
+            out.push_back(std::move(kw));
+            VecN term;
+            for (const auto& c : node.children) term.c.push_back(eval_float(*c));
+            out.push_back(value_item(Value{std::move(term), node.loc}, node.loc));
+            return Flow::Normal;
+        }
         case Kind::MapEntry: {
             Item it;
             it.kind = Item::Kind::MapEntry;

@@ -194,6 +194,12 @@ struct ShapeBoxes {
         const double rmax = std::max(std::abs(r.min.x), std::abs(r.max.x));
         return {{-rmax, r.min.y, -rmax}, {rmax, r.max.y, rmax}};
     }
+    // Unbounded like a plane unless clipped (POV-Ray's poly, cubic, quartic and quadric).
+    ShapeBox operator()(const scene::Poly&) const { return {huge(), true}; }
+    ShapeBox operator()(const scene::Quadric&) const { return {huge(), true}; }
+    ShapeBox operator()(const scene::Superellipsoid&) const {
+        return {{glm::dvec3(-1.0001), glm::dvec3(1.0001)}};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

@@ -23,6 +23,7 @@ const char* kind_name(Kind k) {
         case Kind::MapEntry: return "MapEntry";
         case Kind::Comma: return "Comma";
         case Kind::Semicolon: return "Semicolon";
+        case Kind::PolyTerm: return "PolyTerm";
         case Kind::Body: return "Body";
         case Kind::Version: return "Version";
         case Kind::Include: return "Include";

@@ -47,6 +47,7 @@ enum class Kind {
     MapEntry,   // [ items ] inside a map block: children = items
     Comma,      // ',' between items (kept: POV uses commas to separate some arguments)
     Semicolon,  // ';' outside a directive (accepted and ignored)
+    PolyTerm,   // xyz(i, j, k): c in a polynomial block; children = i, j, k, c
 
     // ---- directives (may appear wherever an item may) ---------------------------------
     Body,       // a sequence of items: the whole file, a directive branch, a macro body

@@ -180,6 +180,7 @@ LUMEN_NODE(map_entry, makes<K::MapEntry, finish::keep, true>);
 LUMEN_NODE(keyword_item, makes<K::Keyword, finish::text>);
 LUMEN_NODE(comma_item, makes<K::Comma>);
 LUMEN_NODE(semicolon_item, makes<K::Semicolon>);
+LUMEN_NODE(poly_term, makes<K::PolyTerm>);
 
 // directives
 LUMEN_NODE(unofficial_version, token<>);

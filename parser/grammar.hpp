@@ -273,9 +273,15 @@ struct keyword_item : word_if<plain_keyword> {};
 struct comma_item : one<','> {};
 struct semicolon_item : one<';'> {};
 
-// item := directive | block | map_entry | ',' | ';' | keyword | expression
+// poly_term := 'xyz' '(' expr ',' expr ',' expr ')' ':' expr   (polynomial { } terms)
+struct poly_term : seq<TAO_PEGTL_KEYWORD("xyz"), sep, one<'('>, sep, plain_expression, list_sep,
+                       plain_expression, list_sep, plain_expression, sep, one<')'>, sep,
+                       one<':'>, sep, plain_expression> {};
+
+// item := directive | block | map_entry | ',' | ';' | poly_term | keyword | expression
 struct item : sor<directive, padded<block>, padded<map_entry>, padded<comma_item>,
-                  padded<semicolon_item>, padded<keyword_item>, padded<plain_expression>> {};
+                  padded<semicolon_item>, padded<poly_term>, padded<keyword_item>,
+                  padded<plain_expression>> {};
 
 // ---- directives -----------------------------------------------------------------------------
 

@@ -27,7 +27,10 @@
     X(Text, "text")                            \
     X(Prism, "prism")                          \
     X(Lathe, "lathe")                          \
-    X(Sor, "sor")
+    X(Sor, "sor")                              \
+    X(Poly, "poly", "cubic", "quartic", "polynomial") \
+    X(Quadric, "quadric")                      \
+    X(Superellipsoid, "superellipsoid")
 
 namespace lumen::scene {
 
@@ -53,9 +56,8 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "bicubic_patch", "blob", "cubic", "height_field", "isosurface", "julia_fractal",
-    "lemon", "light_group", "ovus", "parametric", "poly", "polynomial",
-    "quadric", "quartic", "sphere_sweep", "superellipsoid"};
+    "bicubic_patch", "blob", "height_field", "isosurface", "julia_fractal", "lemon",
+    "light_group", "ovus", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

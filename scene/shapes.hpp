@@ -143,6 +143,38 @@ struct Sor {
     LUMEN_FIELDS(f("points", s.points), f("open", s.open), f("sturm", s.sturm))
 };
 
+// poly { Order, <coefficients> } (Order 2..35), cubic { <20> } (3), quartic { <35> } (4):
+// F(x, y, z) = 0 with F < 0 inside. The coefficients are in POV-Ray's term order: the power of
+// x from Order down to 0, within it the power of y, then of z, each from the most left down.
+struct Poly {
+    int order = 2;
+    std::vector<double> coeffs;  // (order+1)(order+2)(order+3)/6 of them
+    bool sturm = false;
+    LUMEN_FIELDS(f("order", s.order), f("coeffs", s.coeffs), f("sturm", s.sturm))
+
+    static size_t term_count(int order) { return size_t(order + 1) * (order + 2) * (order + 3) / 6; }
+    // Where x^i y^j z^k (i + j + k <= order) sits in the term order.
+    static size_t term_index(int order, int i, int j, int k) {
+        size_t index = 0;
+        for (int a = order; a > i; --a) index += size_t(order - a + 1) * (order - a + 2) / 2;
+        for (int b = order - i; b > j; --b) index += size_t(order - i - b + 1);
+        return index + size_t(order - i - j - k);
+    }
+};
+// quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }:
+// A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J = 0, inside where <= 0.
+struct Quadric {
+    glm::dvec3 square{1}, mixed{0}, linear{0};
+    double constant = 1;
+    LUMEN_FIELDS(f("square", s.square), f("mixed", s.mixed), f("linear", s.linear),
+                 f("constant", s.constant))
+};
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1 in [-1, 1]^3.
+struct Superellipsoid {
+    double e = 1, n = 1;
+    LUMEN_FIELDS(f("e", s.e), f("n", s.n))
+};
+
 #undef LUMEN_FIELDS
 
 }  // namespace lumen::scene

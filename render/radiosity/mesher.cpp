@@ -268,6 +268,10 @@ struct ShapeMesher {
     NotMeshed operator()(const scene::Prism&) const { return {}; }
     NotMeshed operator()(const scene::Lathe&) const { return {}; }
     NotMeshed operator()(const scene::Sor&) const { return {}; }
+    // Implicit surfaces are not meshed: they only occlude.
+    NotMeshed operator()(const scene::Poly&) const { return {}; }
+    NotMeshed operator()(const scene::Quadric&) const { return {}; }
+    NotMeshed operator()(const scene::Superellipsoid&) const { return {}; }
     // Unions are meshed through by the caller; other CSG only occludes.
     NotMeshed operator()(const scene::Csg&) const { return {}; }
     NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }

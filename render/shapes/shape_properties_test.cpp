@@ -97,6 +97,27 @@ scene::Sor sample_shape(std::type_identity<scene::Sor>) {  // a capped vase
     s.points = {{0, -1.2}, {0.5, -1}, {0.8, 0}, {0.4, 1}, {0.6, 1.3}};
     return s;
 }
+// A torus (R 1, r 0.4) written as a quartic. Scaled by 1000: POV-Ray's poly counts F < 1e-4
+// as inside, so F must grow faster than 1e-4 per 1e-6 step off the surface for the
+// normal test's inside/outside probes.
+scene::Poly sample_shape(std::type_identity<scene::Poly>) {
+    scene::Poly p;
+    p.order = 4;
+    p.coeffs.assign(scene::Poly::term_count(4), 0);
+    auto set = [&](int i, int j, int k, double c) { p.coeffs[scene::Poly::term_index(4, i, j, k)] = 1000 * c; };
+    // (x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2), R^2 - r^2 = 0.84
+    const double a = 0.84;
+    set(4, 0, 0, 1); set(0, 4, 0, 1); set(0, 0, 4, 1);
+    set(2, 2, 0, 2); set(2, 0, 2, 2); set(0, 2, 2, 2);
+    set(2, 0, 0, 2 * a - 4); set(0, 2, 0, 2 * a); set(0, 0, 2, 2 * a - 4);
+    set(0, 0, 0, a * a);
+    return p;
+}
+// A tilted ellipsoid with a linear term (large enough for the rays aimed within 2 of 0).
+scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
+    return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
+}
+scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
 
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
