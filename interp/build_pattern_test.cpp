@@ -154,9 +154,10 @@ TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
               "pattern 'pavement number_of_sides 3 number_of_tiles 1 pattern 1'");
     EXPECT_FALSE(pattern("pavement number_of_sides 4").unsupported);
     EXPECT_FALSE(pattern("pavement number_of_sides 4 number_of_tiles 2 form 2").unsupported);
-    ASSERT_TRUE(pattern("pavement number_of_sides 4 number_of_tiles 3 pattern 2").unsupported);
-    EXPECT_EQ(pattern("pavement number_of_sides 4 number_of_tiles 3 pattern 2").unsupported->feature,
-              "pattern 'pavement number_of_sides 4 number_of_tiles 3 pattern 2'");
+    EXPECT_FALSE(pattern("pavement number_of_sides 4 number_of_tiles 6 pattern 35").unsupported);
+    ASSERT_TRUE(pattern("pavement number_of_sides 6 number_of_tiles 3 pattern 2").unsupported);
+    EXPECT_EQ(pattern("pavement number_of_sides 6 number_of_tiles 3 pattern 2").unsupported->feature,
+              "pattern 'pavement number_of_sides 6 number_of_tiles 3 pattern 2'");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { pavement number_of_sides 5 } }"),
               "t.pov:1:50: error: number_of_sides of pavement must be 3, 4 or 6");
     EXPECT_NE(error_of("sphere { 0, 1 pigment { pavement number_of_sides 6 number_of_tiles 6 } }"),
