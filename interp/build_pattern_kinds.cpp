@@ -11,6 +11,7 @@
 #include "base/file_resolver.hpp"
 #include "interp/build_common.hpp"
 #include "interp/df3_file.hpp"
+#include "scene/pavement_layouts.hpp"
 
 namespace lumen::interp {
 
@@ -282,6 +283,12 @@ void verify_pattern(ItemCursor& cur, SourceLoc at, scene::Pattern& pattern) {
     p->exterior = as_byte(p->exterior) % 3;
     p->interior = as_byte(p->interior) % 3;
     p->form = as_byte(p->form) % s->forms;
+    if (!scene::pavement_layout(sides, tiles, number))
+        mark_unsupported(pattern,
+                         "pattern 'pavement number_of_sides " + std::to_string(sides) +
+                             " number_of_tiles " + std::to_string(tiles) + " pattern " +
+                             std::to_string(number) + "'",
+                         at);
 }
 
 bool read_pattern_kind_modifier(ItemCursor& cur, const Item& kw, scene::Pattern& pattern) {

@@ -25,6 +25,11 @@ TEST_F(BuildPattern, EveryTableKeywordReadsAsItsKind) {
             continue;
         const scene::Texture t = texture_of(pigment_text(row.keyword));
         EXPECT_EQ(t.pigment->pattern.type(), row.type) << row.keyword;
+        // pavement's default layout (3 sides) is not modelled yet: its own test below.
+        if (row.keyword == "pavement") {
+            ++read;
+            continue;
+        }
         EXPECT_EQ(t.pigment->pattern.unsupported.has_value(), !row.rendered) << row.keyword;
         if (!row.rendered) {
             EXPECT_EQ(t.pigment->pattern.unsupported->feature,
@@ -145,7 +150,14 @@ TEST_F(BuildPattern, SlopeTilingQuiltedAndDensityFile) {
     EXPECT_EQ(p4.interior, 1);
     EXPECT_EQ(p4.form, 1);
     ASSERT_TRUE(pattern("pavement").unsupported);
-    EXPECT_EQ(pattern("pavement").unsupported->feature, "pattern 'pavement'");
+    EXPECT_EQ(pattern("pavement").unsupported->feature,
+              "pattern 'pavement number_of_sides 3 number_of_tiles 1 pattern 1'");
+    EXPECT_FALSE(pattern("pavement number_of_sides 4").unsupported);
+    EXPECT_FALSE(pattern("pavement number_of_sides 4 number_of_tiles 2 form 2").unsupported);
+    EXPECT_FALSE(pattern("pavement number_of_sides 4 number_of_tiles 6 pattern 35").unsupported);
+    ASSERT_TRUE(pattern("pavement number_of_sides 6 number_of_tiles 3 pattern 2").unsupported);
+    EXPECT_EQ(pattern("pavement number_of_sides 6 number_of_tiles 3 pattern 2").unsupported->feature,
+              "pattern 'pavement number_of_sides 6 number_of_tiles 3 pattern 2'");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { pavement number_of_sides 5 } }"),
               "t.pov:1:50: error: number_of_sides of pavement must be 3, 4 or 6");
     EXPECT_NE(error_of("sphere { 0, 1 pigment { pavement number_of_sides 6 number_of_tiles 6 } }"),

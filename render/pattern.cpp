@@ -11,6 +11,7 @@
 #include "render/patterns/fractals.hpp"
 #include "render/patterns/noise_kinds.hpp"
 #include "render/patterns/pattern_sources.hpp"
+#include "render/patterns/pavement.hpp"
 #include "render/patterns/periodic.hpp"
 #include "render/patterns/surface_patterns.hpp"
 #include "render/patterns/tilings.hpp"

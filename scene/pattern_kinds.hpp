@@ -262,7 +262,7 @@ struct DensityFile {
     X(Julia, "julia", 0, grey_ramp, true)                       \
     X(Mandel, "mandel", 0, mandel, true)                        \
     X(Magnet, "magnet", 0, grey_ramp, true)                     \
-    X(Pavement, "pavement", 0, grey_ramp, false)                \
+    X(Pavement, "pavement", 0, grey_ramp, true)                 \
     X(Slope, "slope", 0, grey_ramp, true)                       \
     X(Spiral1, "spiral1", 0, grey_ramp, true)                   \
     X(Spiral2, "spiral2", 0, grey_ramp, true)                   \
