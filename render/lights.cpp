@@ -113,16 +113,16 @@ bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out)
            std::fabs(out.colour.z) >= kEpsilon;
 }
 
-double projection_reach(const LightSource& l, const glm::dvec3& point, const glm::dvec3& dir,
-                        double distance) {
+std::optional<double> projection_reach(const LightSource& l, const glm::dvec3& point,
+                                       const glm::dvec3& dir, double distance) {
     if (!l.projection) return distance;
     // Only the segment between the point and the light counts (an object beyond the light
     // projects nothing), with the shadow rays' tolerance at both ends.
     constexpr double kTolerance = 1e-3;
-    if (distance <= 2 * kTolerance) return 0;
+    if (distance <= 2 * kTolerance) return std::nullopt;
     Hit hit;
     if (!l.projection->intersect(Ray{point, dir}, kTolerance, distance - kTolerance, hit))
-        return 0;
+        return std::nullopt;
     return hit.t;
 }
 

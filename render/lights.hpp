@@ -1,6 +1,7 @@
 // Light sources prepared once per render (POV-Ray 3.7's rules): direction, distance and
 // attenuation (spotlight cone, cylinder, fade) at a surface point, and area-light grids.
 #pragma once
+#include <optional>
 #include <memory>
 #include <vector>
 
@@ -40,12 +41,12 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
 bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& out);
 
 // How far from `point` along unit `dir` (towards the light, `distance` away) shadows are
-// tested: all the way without a projected_through object; with one, 0 (no light) where the
-// segment misses it, else up to its nearest crossing. POV-Ray tests no further (measured: an
-// object between the projected one and the light, or the projected object itself placed in
+// tested: all the way without a projected_through object; with one, nothing (no light) where
+// the segment misses it, else up to its nearest crossing. POV-Ray tests no further (measured:
+// an object between the projected one and the light, or the projected object itself placed in
 // the scene, casts no shadow).
-double projection_reach(const LightSource& light, const glm::dvec3& point, const glm::dvec3& dir,
-                        double distance);
+std::optional<double> projection_reach(const LightSource& light, const glm::dvec3& point,
+                                       const glm::dvec3& dir, double distance);
 
 // World position of area-light grid sample (u, v), given as fractional grid indices so jitter
 // can move it; `to_light` (unit, point -> light centre) is used by `orient`.

@@ -52,11 +52,11 @@ private:
             } else if (dist > 0) {
                 to /= dist;
             }
-            const double reach = projection_reach(l_, s_.point, to, dist);
+            const std::optional<double> reach = projection_reach(l_, s_.point, to, dist);
             state_.area_filter[k] =
-                reach > 0
-                    ? shadow_filter(*env_.geometry, s_.point, to, reach, interiors_, state_.counters)
-                    : glm::dvec3(0);
+                reach ? shadow_filter(*env_.geometry, s_.point, to, *reach, interiors_,
+                                      state_.counters)
+                      : glm::dvec3(0);
             state_.area_valid[k] = 1;
         }
         return state_.area_filter[k];
@@ -124,15 +124,15 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     const bool fog = fog_dims(l, env);
     double solid = 0;  // the way inside solid objects, where there is no fog
     if (l.shadowless) {
-        filter = glm::dvec3(projection_reach(l, s.point, ls.dir, ls.distance) > 0);
+        filter = glm::dvec3(projection_reach(l, s.point, ls.dir, ls.distance).has_value());
     } else if (shadowed_by_itself(s, ls.dir, env)) {
         return glm::dvec3(0);
     } else if (l.area && env.quality >= 5) {
         filter = AreaShadow(l, s, ls, env, interiors, state).filter();
     } else {
-        const double reach = projection_reach(l, s.point, ls.dir, ls.distance);
-        if (!(reach > 0)) return glm::dvec3(0);
-        filter = shadow_filter(*env.geometry, s.point, ls.dir, reach, interiors, state.counters,
+        const std::optional<double> reach = projection_reach(l, s.point, ls.dir, ls.distance);
+        if (!reach) return glm::dvec3(0);
+        filter = shadow_filter(*env.geometry, s.point, ls.dir, *reach, interiors, state.counters,
                                fog ? &solid : nullptr);
     }
     if (fog && solid < ls.distance)

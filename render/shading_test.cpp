@@ -119,13 +119,14 @@ TEST(Lights, ProjectedThroughPassesOnlyAlongSegmentsCrossingTheObject) {
     const auto p = prepare_lights({l});
     const glm::dvec3 up(0, 1, 0);
     // Shadows are tested up to the object's nearest crossing (its bottom, y = 4), no further.
-    EXPECT_NEAR(projection_reach(p[0], {0, 0, 0}, up, 10), 4, 1e-12);
-    EXPECT_EQ(projection_reach(p[0], {3, 0, 0}, glm::normalize(glm::dvec3(-3, 10, 0)),
-                               std::sqrt(109.0)),
-              0);
+    EXPECT_NEAR(projection_reach(p[0], {0, 0, 0}, up, 10).value(), 4, 1e-12);
+    EXPECT_FALSE(projection_reach(p[0], {3, 0, 0}, glm::normalize(glm::dvec3(-3, 10, 0)),
+                                  std::sqrt(109.0)));
     // The object must lie between the point and the light, not beyond the light.
-    EXPECT_EQ(projection_reach(p[0], {0, 0, 0}, up, 3), 0);
-    EXPECT_EQ(projection_reach(prepare_lights({scene::Light{}})[0], {0, 0, 0}, up, 1), 1);
+    EXPECT_FALSE(projection_reach(p[0], {0, 0, 0}, up, 3));
+    // Without a projection the whole way is tested, even a parallel light's negative one.
+    EXPECT_EQ(projection_reach(prepare_lights({scene::Light{}})[0], {0, 0, 0}, up, 1), 1.0);
+    EXPECT_EQ(projection_reach(prepare_lights({scene::Light{}})[0], {0, 0, 0}, up, -2), -2.0);
 }
 
 TEST(Lights, FadeIsTwoAtTheLightAndOneAtFadeDistance) {

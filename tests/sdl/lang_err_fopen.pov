@@ -1,3 +1,3 @@
-// File I/O directives are refused where they stand.
+// File I/O: a write outside the working folder is refused where it stands.
 #declare A = 1;
-#fopen Log "log.txt" write
+#fopen Log "../log.txt" write
