@@ -23,14 +23,15 @@ const std::vector<std::string> kData = {
     "warp",      // read by the pattern it modifies (build_warp.cpp)
     "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
     "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
-    "slope_map"};        // read by its normal (build_normal.cpp)
+    "slope_map",         // read by its normal (build_normal.cpp)
+    "mesh_camera"};      // read by its camera (build_camera.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
     "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
     "density", "density_map", "density_file", "spline",
-    "function", "rainbow", "tiles", "mesh_camera"});
+    "function", "rainbow", "tiles"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();

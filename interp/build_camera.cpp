@@ -1,6 +1,7 @@
 // camera { } with POV's fix-up order, so the renderer only maps
 // pixels to rays.
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <optional>
 
@@ -64,6 +65,45 @@ void check_basis(ItemCursor& cur, const scene::Camera& cam, const VectorLocs& at
 
 }  // namespace
 
+// mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { } ... [smooth] }, with POV-Ray's rules
+// on how many rays each distribution takes.
+scene::Camera::MeshRays read_mesh_camera(BuildContext& ctx, const BlockValue& block,
+                                         const std::function<void(const std::string&, SourceLoc)>&
+                                             unsupported) {
+    ItemCursor cur(ctx, block);
+    scene::Camera::MeshRays m;
+    const double rays = cur.expect_float("mesh_camera");
+    const SourceLoc rays_loc = cur.here();
+    const double dist = cur.expect_float("the number of rays");
+    const SourceLoc dist_loc = cur.here();
+    cur.optional_float();  // the maximum distance: POV-Ray reads it and does not use it
+    bool smooth = false;
+    while (!cur.at_end()) {
+        const Item& item = cur.next();
+        if (item.kind == Item::Kind::Keyword && item.keyword == "smooth") {
+            smooth = true;
+        } else if (item.kind == Item::Kind::Value && item.value.is<scene::ObjectPtr>() &&
+                   std::holds_alternative<scene::Mesh>(item.value.as<scene::ObjectPtr>()->shape)) {
+            m.meshes.push_back(item.value.as<scene::ObjectPtr>());
+        } else {
+            cur.fail(item.loc, "mesh_camera takes mesh objects and 'smooth', found " +
+                                   describe_item(item));
+        }
+    }
+    m.rays = int(rays);
+    m.distribution = int(dist);
+    if (!(rays >= 1)) cur.fail(rays_loc, "mesh_camera needs at least one ray per pixel");
+    if (!(dist >= 0 && dist < 4)) cur.fail(dist_loc, "mesh_camera distribution must be 0, 1, 2 or 3");
+    if (m.meshes.empty()) cur.fail(block.loc, "mesh_camera needs a mesh");
+    if (m.distribution >= 2 && m.rays != 1)
+        cur.fail(rays_loc, "mesh_camera distributions 2 and 3 take one ray per pixel");
+    if (m.distribution == 0 && size_t(m.rays) > m.meshes.size())
+        cur.fail(rays_loc, "mesh_camera distribution 0 needs a mesh for each ray");
+    if (m.distribution == 3) unsupported("mesh_camera distribution 3 (uv baking)", dist_loc);
+    if (smooth && m.distribution != 3) cur.warn(block.loc, "mesh_camera 'smooth' is only for distribution 3");
+    return m;
+}
+
 scene::Camera build_camera(ItemCursor& cur) {
     scene::Camera cam;
     if (cur.next_is<std::shared_ptr<const scene::Camera>>())
@@ -91,15 +131,17 @@ scene::Camera build_camera(ItemCursor& cur) {
                 unsupported(cam.normal->pattern.unsupported->feature, cam.normal->pattern.unsupported->loc);
             continue;
         }
-        if (item.kind == Item::Kind::Value && item.value.is<scene::Unsupported>()) {
-            cam.type = scene::CameraType::MeshCamera;  // mesh_camera { }
-            unsupported("camera '" + item.value.as<scene::Unsupported>().feature + "'", item.loc);
+        if (const BlockValue* b = block_of(item, "mesh_camera")) {
+            cam.type = scene::CameraType::MeshCamera;
+            cam.mesh = read_mesh_camera(cur.ctx(), *b, unsupported);
+            type_given = true;
             continue;
         }
         if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, camera_keywords());
         const std::string& w = item.keyword;
         if (const std::optional<scene::CameraType> type = camera_type(w)) {
             cam.type = *type;
+            cam.mesh.reset();
             type_given = true;
             if (w == "cylinder") {
                 const double n = cur.expect_float(w);  // truncated, as POV does
@@ -134,6 +176,10 @@ scene::Camera build_camera(ItemCursor& cur) {
             cur.optional_float();
         } else if (w == "confidence" || w == "variance") cur.expect_float(w);
         else cur.fail_unexpected(item, camera_keywords());
+    }
+    if (cam.mesh) {  // only location.z and direction.z as written count (measured)
+        cam.mesh->offset = cam.location.z;
+        cam.mesh->reverse = cam.direction.z < -1e-10;
     }
     if (!(glm::length(cam.direction) > 0))
         cur.fail(at.direction, "camera direction is a zero vector");

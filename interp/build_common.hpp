@@ -101,6 +101,8 @@ std::shared_ptr<scene::Texture> default_texture(const BuildContext& ctx, SourceL
 // ---- objects (build_object.cpp, build_csg.cpp, build_modifiers.cpp) -------------------------
 scene::ObjectPtr build_object(ItemCursor& cur);  // any shape keyword, CSG or `object`
 scene::ObjectPtr build_csg(ItemCursor& cur);
+// A copy of a declared object with modifiers: `object { Ident ... }`, `mesh { MeshIdent ... }`.
+scene::ObjectPtr read_object_copy(ItemCursor& cur);
 scene::ObjectPtr build_mesh(ItemCursor& cur);   // build_mesh.cpp
 scene::ObjectPtr build_mesh2(ItemCursor& cur);
 scene::ObjectPtr build_text(ItemCursor& cur);   // build_text.cpp

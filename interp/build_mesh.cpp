@@ -51,6 +51,10 @@ bool read_inside_vector(ItemCursor& cur, const Item& item, scene::Mesh& mesh) {
 }  // namespace
 
 scene::ObjectPtr build_mesh(ItemCursor& cur) {
+    // `mesh { Mesh_Ident modifiers }` copies a declared mesh (mesh_camera scenes do).
+    if (cur.next_is<scene::ObjectPtr>() &&
+        std::holds_alternative<scene::Mesh>(cur.peek().value.as<scene::ObjectPtr>()->shape))
+        return read_object_copy(cur);
     scene::Object obj;
     obj.loc = cur.block_loc();
     // Filled in place, so transforms met among the items also move per-triangle textures.

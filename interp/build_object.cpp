@@ -261,6 +261,8 @@ bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view
     return std::find(words.begin(), words.end(), kw) != words.end();
 }
 
+}  // namespace
+
 // A copy of a declared object: `object { Ident modifiers }`.
 scene::ObjectPtr read_object_copy(ItemCursor& cur) {
     scene::Object obj;
@@ -288,8 +290,6 @@ scene::ObjectPtr read_object_copy(ItemCursor& cur) {
     read_object_modifiers(cur, obj, shape_flag, {"sturm", "open"});
     return share(std::move(obj));
 }
-
-}  // namespace
 
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u) {
     auto obj = std::make_shared<scene::Object>();

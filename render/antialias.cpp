@@ -62,11 +62,27 @@ BlockRenderer::BlockRenderer(const Tracer& tracer, const CameraModel& camera,
 Sample BlockRenderer::sample(double x, double y, ThreadState& state,
                              uint64_t& primary_rays) const {
     throw_if_stop_requested();  // SIGINT/SIGTERM: the render unwinds within a sample
-    ++primary_rays;
-    const std::optional<Ray> ray = camera_.ray(x, y);
-    if (!ray) return {glm::dvec3(0), 1.0};  // no ray: black, fully transparent (POV)
-    const RayColour c = tracer_.trace_primary(*ray, state);
-    return {c.rgb, c.transmit};
+    const int rays = camera_.rays_per_sample();
+    if (rays == 1) {
+        ++primary_rays;
+        const std::optional<Ray> ray = camera_.ray(x, y);
+        if (!ray) return {glm::dvec3(0), 1.0};  // no ray: black, fully transparent (POV)
+        const RayColour c = tracer_.trace_primary(*ray, state);
+        return {c.rgb, c.transmit};
+    }
+    // A mesh camera's rays: their average over those shot.
+    Sample sum{glm::dvec3(0), 0.0};
+    int shot = 0;
+    for (int k = 0; k < rays; ++k) {
+        const std::optional<Ray> ray = camera_.ray(x, y, k);
+        if (!ray) continue;
+        ++primary_rays, ++shot;
+        const RayColour c = tracer_.trace_primary(*ray, state);
+        sum.rgb += c.rgb;
+        sum.t += c.transmit;
+    }
+    if (shot == 0) return {glm::dvec3(0), 1.0};
+    return {sum.rgb / double(shot), sum.t / shot};
 }
 
 void BlockRenderer::render(int left, int top, int right, int bottom, Image& image,

@@ -1,11 +1,13 @@
 #include "render/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "render/normal.hpp"
+#include "scene/object.hpp"
 
 namespace lumen::render {
 namespace {
@@ -32,7 +34,60 @@ CameraModel::CameraModel(const scene::Camera& camera, int width, int height)
       right_length_(glm::length(camera.right)),
       up_length_(glm::length(camera.up)),
       width_(width),
-      height_(height) {}
+      height_(height) {
+    if (!camera.mesh) return;
+    // mesh_camera: each face's centroid and unit normal (P3 - P1) x (P2 - P1), POV-Ray's
+    // winding; distribution 1 numbers the faces of all meshes one after another.
+    const scene::Camera::MeshRays& m = *camera.mesh;
+    rays_per_sample_ = m.rays;
+    for (const auto& obj : m.meshes) {
+        const auto* mesh = obj ? std::get_if<scene::Mesh>(&obj->shape) : nullptr;
+        if (!mesh) continue;
+        if (meshes_.empty() || m.distribution != 1) meshes_.push_back({{}, obj->transform});
+        for (const scene::Mesh::Face& f : mesh->faces) {
+            const glm::dvec3 &a = mesh->vertices[f.v[0]], &b = mesh->vertices[f.v[1]],
+                             &c = mesh->vertices[f.v[2]];
+            meshes_.back().faces.push_back(
+                {(a + b + c) / 3.0, unit_or_zero(glm::cross(c - a, b - a))});
+        }
+    }
+}
+
+bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
+    const scene::Camera::MeshRays& m = *camera_.mesh;
+    // POV-Ray's sample coordinates: column x + 0.5, row y - 0.5, clamped to the image (so
+    // rows 0 and 1 both use the first row of faces).
+    const int w = int(width_);
+    const double cx = std::clamp(x + 0.5, 0.0, width_ - 1), cy = std::clamp(y - 0.5, 0.0, height_ - 1);
+    size_t mesh = 0;
+    long long face = 0;
+    switch (m.distribution) {
+        case 0:  // ray k on mesh k, one face per pixel
+            mesh = size_t(k);
+            face = (long long)(cy) * w + (long long)(cx);
+            break;
+        case 1: {  // the meshes joined; rays after the first fall past the faces (as in POV)
+            face = (long long)(cy) * w + (long long)(cx) + (long long)(k) * (long long)(
+                       meshes_.empty() ? 0 : meshes_[0].faces.size());
+            break;
+        }
+        default: {  // 2: the meshes side by side, each W / n columns wide
+            const int columns = std::max(1, w / int(std::max<size_t>(1, meshes_.size())));
+            mesh = size_t(cx / (width_ / double(meshes_.size())));
+            face = (long long)(cy) * columns + (long long)(cx);
+            break;
+        }
+    }
+    if (mesh >= meshes_.size() || face < 0 || size_t(face) >= meshes_[mesh].faces.size())
+        return false;
+    const Face& f = meshes_[mesh].faces[size_t(face)];
+    glm::dvec3 origin = f.centre + m.offset * f.normal;
+    glm::dvec3 dir = m.reverse ? -f.normal : f.normal;
+    const scene::Transform& xf = meshes_[mesh].to_world;
+    ray.origin = xf.point(origin);
+    ray.dir = xf.vector(dir);
+    return true;
+}
 
 bool CameraModel::project(double x, double y, Ray& ray, glm::dvec3& np) const {
     using scene::CameraType;
@@ -44,9 +99,11 @@ bool CameraModel::project(double x, double y, Ray& ray, glm::dvec3& np) const {
     const glm::dvec3 &R = right_unit_, &U = up_unit_, &D = direction_unit_;
     ray.origin = c.location;
     switch (c.type) {
+        case CameraType::MeshCamera:
+            if (c.mesh) return false;  // mesh_ray() (a camera copied without its meshes: below)
+            [[fallthrough]];
         case CameraType::Perspective:
-        case CameraType::Orthographic:
-        case CameraType::MeshCamera: {  // mesh_camera is reported unsupported
+        case CameraType::Orthographic: {
             const double x0 = fx - 0.5, y0 = fy - 0.5;
             np = {x0, y0, 0};
             if (c.type == CameraType::Orthographic) {
@@ -130,14 +187,14 @@ bool CameraModel::project(double x, double y, Ray& ray, glm::dvec3& np) const {
     return false;
 }
 
-std::optional<Ray> CameraModel::ray(double x, double y) const {
+std::optional<Ray> CameraModel::ray(double x, double y, int k) const {
     Ray r;
     glm::dvec3 np;
-    if (!project(x, y, r, np)) return std::nullopt;
+    if (camera_.mesh ? !mesh_ray(x, y, k, r) : !project(x, y, r, np)) return std::nullopt;
     const double l = glm::length(r.dir);
     if (!(l > 0) || !std::isfinite(l)) return std::nullopt;
     r.dir /= l;
-    if (camera_.normal) r.dir = perturbed_normal(*camera_.normal, r.dir, np);
+    if (camera_.normal && !camera_.mesh) r.dir = perturbed_normal(*camera_.normal, r.dir, np);
     return r;
 }
 

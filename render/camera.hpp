@@ -2,11 +2,13 @@
 // interpreter (angle, look_at, orthographic scaling, transforms), so this is only the mapping.
 #pragma once
 #include <optional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "render/ray.hpp"
 #include "scene/camera.hpp"
+#include "scene/transform.hpp"
 
 namespace lumen::render {
 
@@ -20,12 +22,28 @@ public:
     // is sampled at ray(i, j) and anti-aliasing passes fractional positions. None where the
     // projection has no ray (outside a fisheye's or omnimax's circle): POV shows that sample
     // as black, fully transparent, not as the background.
-    std::optional<Ray> ray(double x, double y) const;
+    std::optional<Ray> ray(double x, double y) const { return ray(x, y, 0); }
+    // A mesh camera shoots several rays per sample (their colours are averaged over those
+    // shot); ray k of the sample at (x, y). Every other camera has one.
+    int rays_per_sample() const { return rays_per_sample_; }
+    std::optional<Ray> ray(double x, double y, int k) const;
 
 private:
     // The unnormalised direction (and, for the projections that move it, the origin) of the
     // sample at (x, y), and the coordinates a camera normal is evaluated at.
     bool project(double x, double y, Ray& ray, glm::dvec3& normal_point) const;
+    // mesh_camera: the face a ray starts on, POV-Ray's face numbering per distribution.
+    bool mesh_ray(double x, double y, int k, Ray& ray) const;
+
+    struct Face {
+        glm::dvec3 centre, normal;  // object space; normal unit length
+    };
+    struct MeshFaces {
+        std::vector<Face> faces;
+        scene::Transform to_world;
+    };
+    std::vector<MeshFaces> meshes_;  // distribution 1: one list, all meshes' faces in order
+    int rays_per_sample_ = 1;
 
     scene::Camera camera_;
     glm::dvec3 right_unit_, up_unit_, direction_unit_;

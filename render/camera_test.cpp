@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/camera.hpp"
+#include "scene/object.hpp"
 
 namespace lumen::render {
 namespace {
@@ -117,6 +118,65 @@ TEST(Camera, EveryProjectionGivesUnitFiniteRays) {
                     EXPECT_NEAR(glm::length(r->dir), 1, 1e-9) << t;
                 }
     }
+}
+
+}  // namespace
+}  // namespace lumen::render
+
+namespace lumen::render {
+namespace {
+
+// A mesh of w x h unit triangles, one per pixel in row-major order, each facing +z (POV's
+// winding: (P3 - P1) x (P2 - P1)), centred at (column, -row).
+std::shared_ptr<scene::Object> pixel_grid(int w, int h) {
+    auto obj = std::make_shared<scene::Object>();
+    scene::Mesh m;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const glm::dvec3 c(i, -j, 0);
+            const int base = int(m.vertices.size());
+            for (const glm::dvec3& d : {glm::dvec3(-0.1, -0.1, 0), glm::dvec3(-0.1, 0.2, 0),
+                                        glm::dvec3(0.2, -0.1, 0)})
+                m.vertices.push_back(c + d);
+            scene::Mesh::Face f;
+            f.v = {base, base + 1, base + 2};
+            m.faces.push_back(f);
+        }
+    obj->shape = std::move(m);
+    return obj;
+}
+
+TEST(Camera, MeshCameraRaysLeaveTheFacesInPovRaysOrder) {
+    scene::Camera c;
+    c.type = scene::CameraType::MeshCamera;
+    c.mesh = scene::Camera::MeshRays{};
+    c.mesh->meshes = {pixel_grid(4, 3)};
+    c.mesh->offset = -0.5;
+    const CameraModel cam(c, 4, 3);
+    ASSERT_EQ(cam.rays_per_sample(), 1);
+    auto r = cam.ray(2, 2);  // row 2 uses face row 1; rows 0 and 1 share face row 0
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->origin.x, 2, 1e-12);  // the centroid
+    EXPECT_NEAR(r->origin.y, -1, 1e-12);
+    EXPECT_NEAR(r->origin.z, -0.5, 1e-12);  // location.z along the normal
+    EXPECT_NEAR(r->dir.z, 1, 1e-12);
+    EXPECT_NEAR(cam.ray(1, 0)->origin.y, cam.ray(1, 1)->origin.y, 1e-12);
+    // Distribution 1 with two rays: the second falls past the faces and is not shot.
+    c.mesh->distribution = 1;
+    c.mesh->rays = 2;
+    const CameraModel joined(c, 4, 3);
+    EXPECT_TRUE(joined.ray(0, 0, 0));
+    EXPECT_FALSE(joined.ray(0, 0, 1));
+    // Reversed and transformed: the direction turns with the mesh.
+    c.mesh->distribution = 0;
+    c.mesh->rays = 1;
+    c.mesh->reverse = true;
+    auto moved = std::make_shared<scene::Object>(*pixel_grid(4, 3));
+    moved->transform = {glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1), glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -5, 0, 0, 1)};
+    c.mesh->meshes = {moved};
+    const CameraModel back(c, 4, 3);
+    EXPECT_NEAR(back.ray(0, 0)->dir.z, -1, 1e-12);
+    EXPECT_NEAR(back.ray(0, 0)->origin.x, 5, 1e-12);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <vector>
 #include <glm/vec3.hpp>
 
 #include "scene/unsupported.hpp"
@@ -10,6 +11,7 @@
 namespace lumen::scene {
 
 struct Normal;  // scene/texture.hpp
+struct Object;  // scene/object.hpp
 
 // X(Type, keyword): the projections, in the order the dump names them.
 #define LUMEN_CAMERA_TYPES(X)                \
@@ -46,6 +48,17 @@ struct Camera {
     // `normal { }`: perturbs each ray's direction, evaluated at the projection's own
     // coordinates of the sample.
     std::shared_ptr<const Normal> normal;
+    // mesh_camera { rays distribution mesh... }: each sample's rays start on the faces of these
+    // meshes (world transforms included); location.z and direction.z as written say how far
+    // along the face normal a ray starts and whether it runs backwards.
+    struct MeshRays {
+        int rays = 1;
+        int distribution = 0;  // 0: ray k on mesh k; 1: meshes joined; 2: meshes side by side
+        std::vector<std::shared_ptr<const Object>> meshes;
+        double offset = 0;     // location.z
+        bool reverse = false;  // direction.z < 0
+    };
+    std::optional<MeshRays> mesh;
     std::optional<Unsupported> unsupported;  // e.g. mesh_camera, focal blur
     SourceLoc loc;
 };
