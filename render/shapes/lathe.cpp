@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/polynomial.hpp"
+#include "render/shapes/axial_search.hpp"
 #include "render/shapes/lathe.hpp"
 #include "scene/spline_segments.hpp"
 
@@ -23,11 +24,6 @@ void multiply(const double (&a)[4], const double (&b)[4], double (&out)[7]) {
     std::fill(std::begin(out), std::end(out), 0.0);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) out[i + j] += a[i] * b[j];
-}
-
-Aabb padded(Aabb b) {
-    const glm::dvec3 pad = 1e-9 * (glm::dvec3(1) + glm::abs(b.lo) + glm::abs(b.hi));
-    return {b.lo - pad, b.hi + pad};
 }
 
 // POV-Ray's lathe normal (d.y x, -d.x rho, d.y z) for the curve's slope d at the hit, turned
@@ -57,14 +53,12 @@ LatheShape make_lathe(const scene::Lathe& l) {
 
 bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
-    const double len = glm::length(r.d);
-    if (!(len > 0)) return false;
-    const glm::dvec3 D = r.d / len, P = r.o;
-    const SlabRay slab(P, D);
-    double enter, exit;
-    if (!slab.hits(padded(s.box), tmin * len, tmax * len, enter, exit)) return false;
-    const double k_min = tmin * len;
-    double best = std::min(tmax * len, exit * (1 + 1e-9) + 1e-9);
+    const std::optional<AxialSearch> search = AxialSearch::start(r, s.box, tmin, tmax);
+    if (!search) return false;
+    const glm::dvec3 D = search->D, P = search->P;
+    const double len = search->len, k_min = search->k_min;
+    const SlabRay& slab = search->slab;
+    double best = search->best;
     glm::dvec3 normal(0);
     bool found = false;
     auto offer = [&](double k, const CurveSegment& seg, double w) {
@@ -77,7 +71,7 @@ bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax,
     const double rho2 = P.x * P.x + P.z * P.z;
     for (const CurveSegment& seg : s.curve.segments) {
         const double ro = std::max(std::abs(seg.lo.x), std::abs(seg.hi.x));
-        if (!slab.hits(padded({{-ro, seg.lo.y, -ro}, {ro, seg.hi.y, ro}}), k_min, best)) continue;
+        if (!slab.hits(padded_box({{-ro, seg.lo.y, -ro}, {ro, seg.hi.y, ro}}), k_min, best)) continue;
         double x[4], y[4];
         seg.coefficients(0, x);
         seg.coefficients(1, y);

@@ -146,14 +146,26 @@ bool intersect(const PolyShape& s, const LocalRay& r, double tmin, double tmax, 
     return true;
 }
 
-double poly_value(const PolyShape& s, const glm::dvec3& p) {
+namespace {
+
+// x^i, y^i, z^i for i = 0..order.
+struct Powers {
     double px[kMaxPolyOrder + 1], py[kMaxPolyOrder + 1], pz[kMaxPolyOrder + 1];
-    px[0] = py[0] = pz[0] = 1;
-    for (int i = 1; i <= s.order; ++i) {
-        px[i] = px[i - 1] * p.x;
-        py[i] = py[i - 1] * p.y;
-        pz[i] = pz[i - 1] * p.z;
+    Powers(int order, const glm::dvec3& p) {
+        px[0] = py[0] = pz[0] = 1;
+        for (int i = 1; i <= order; ++i) {
+            px[i] = px[i - 1] * p.x;
+            py[i] = py[i - 1] * p.y;
+            pz[i] = pz[i - 1] * p.z;
+        }
     }
+};
+
+}  // namespace
+
+double poly_value(const PolyShape& s, const glm::dvec3& p) {
+    const Powers w(s.order, p);
+    const double *px = w.px, *py = w.py, *pz = w.pz;
     double v = 0;
     for_each_term(s.order, [&](int term, int i, int j, int k) {
         if (s.coeffs[term] != 0) v += s.coeffs[term] * px[i] * py[j] * pz[k];
@@ -162,13 +174,8 @@ double poly_value(const PolyShape& s, const glm::dvec3& p) {
 }
 
 glm::dvec3 poly_gradient(const PolyShape& s, const glm::dvec3& p) {
-    double px[kMaxPolyOrder + 1], py[kMaxPolyOrder + 1], pz[kMaxPolyOrder + 1];
-    px[0] = py[0] = pz[0] = 1;
-    for (int i = 1; i <= s.order; ++i) {
-        px[i] = px[i - 1] * p.x;
-        py[i] = py[i - 1] * p.y;
-        pz[i] = pz[i - 1] * p.z;
-    }
+    const Powers w(s.order, p);
+    const double *px = w.px, *py = w.py, *pz = w.pz;
     glm::dvec3 g(0);
     for_each_term(s.order, [&](int term, int i, int j, int k) {
         const double c = s.coeffs[term];

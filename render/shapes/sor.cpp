@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/polynomial.hpp"
+#include "render/shapes/axial_search.hpp"
 #include "render/shapes/sor.hpp"
 
 namespace lumen::render {
@@ -48,11 +49,6 @@ SorSegment fit(double y1, double v1, double s1, double y2, double v2, double s2)
     return s;
 }
 
-Aabb padded(Aabb b) {
-    const glm::dvec3 pad = 1e-9 * (glm::dvec3(1) + glm::abs(b.lo) + glm::abs(b.hi));
-    return {b.lo - pad, b.hi + pad};
-}
-
 }  // namespace
 
 SorShape make_sor(const scene::Sor& in) {
@@ -83,14 +79,12 @@ SorShape make_sor(const scene::Sor& in) {
 
 bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
-    const double len = glm::length(r.d);
-    if (!(len > 0)) return false;
-    const glm::dvec3 D = r.d / len, P = r.o;
-    const SlabRay slab(P, D);
-    double enter, exit;
-    if (!slab.hits(padded(s.box), tmin * len, tmax * len, enter, exit)) return false;
-    const double k_min = tmin * len;
-    double best = std::min(tmax * len, exit * (1 + 1e-9) + 1e-9);
+    const std::optional<AxialSearch> search = AxialSearch::start(r, s.box, tmin, tmax);
+    if (!search) return false;
+    const glm::dvec3 D = search->D, P = search->P;
+    const double len = search->len, k_min = search->k_min;
+    const SlabRay& slab = search->slab;
+    double best = search->best;
     glm::dvec3 normal(0);
     bool found = false;
     auto offer = [&](double k, const glm::dvec3& n) {
@@ -113,7 +107,7 @@ bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, S
     for (const SorSegment& seg : s.segments) {
         double lo, hi;
         const Aabb box{{-seg.rmax, seg.y1, -seg.rmax}, {seg.rmax, seg.y2, seg.rmax}};
-        if (!slab.hits(padded(box), k_min, best, lo, hi)) continue;
+        if (!slab.hits(padded_box(box), k_min, best, lo, hi)) continue;
         const double A = seg.a, B = seg.b, C = seg.c, y = P.y;
         const double c[4] = {y * (y * (A * y + B) + C) + seg.d - P.x * P.x - P.z * P.z,
                              D.y * (y * (3 * A * y + 2 * B) + C) - 2 * pd,
