@@ -9,6 +9,7 @@
 
 #include "interp/builtin_table.hpp"
 #include "interp/conversions.hpp"
+#include "noise/noise.hpp"
 
 namespace lumen::interp {
 
@@ -116,7 +117,7 @@ const BuiltinTable& builtin_table();
 bool Evaluator::is_builtin_function(const std::string& name) { return builtin_table().count(name) > 0; }
 
 Value Evaluator::call_builtin(const ast::Node& call) {
-    static const char* const unsupported[] = {"vturbulence", "eval_pigment"};
+    static const char* const unsupported[] = {"eval_pigment"};
     for (const char* u : unsupported)
         if (call.text == u) throw LumenError(call.loc, std::string("'") + u + "' is not supported");
     auto it = builtin_table().find(call.text);
@@ -230,6 +231,15 @@ const BuiltinTable& builtin_table() {
                             for (double x : v) s += x * x;
                             return Value{std::sqrt(s), c.loc};
                         }};
+        // vturbulence(Lambda, Omega, Octaves, P): POV's DTurbulence at P, lambda and omega
+        // rounded to float and the octaves truncated and clamped to 1..10 (as POV-Ray does).
+        t["vturbulence"] = {4, 4, false, [](Evaluator&, const ast::Node& c, Args& a) {
+                                scene::TurbulenceParams params;
+                                params.lambda = static_cast<float>(to_float(a[0]));
+                                params.omega = static_cast<float>(to_float(a[1]));
+                                params.octaves = int(std::clamp(to_float(a[2]), 1.0, 10.0));
+                                return vec3(noise::dturbulence(to_vec3(a[3]), params), c.loc);
+                            }};
         t["vnormalize"] = {1, 1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
                                glm::dvec3 p = to_vec3(a[0]);
                                double len = std::sqrt(dot(p, p));

@@ -77,6 +77,22 @@ TEST_F(BuiltinTest, RandomStreamsMatchPovRay) {
     EXPECT_EQ(expr_error("rand(99)"), "expr:1:6: error: rand() needs a stream made by seed()");
 }
 
+TEST_F(BuiltinTest, VturbulenceMatchesPovRay) {
+    // povray printed these with vstr(3, vturbulence(2.1, 0.45, Octaves, P), " ", 0, 9).
+    struct Case { const char* call; std::vector<double> want; };
+    const Case cases[] = {
+        {"vturbulence(2.1, 0.45, 6, <0.3, 1.7, -2.2>)", {0.062854203, 0.236673297, 0.318124176}},
+        {"vturbulence(2.1, 0.45, 1, <10.5, 0, 3.25>)", {-0.355312327, -0.222720453, 0.079218689}},
+        {"vturbulence(2.1, 0.45, 3.7, <-4.1, 2.9, 0.6>)", {-0.129189474, -0.364321248, -0.308491371}},
+        {"vturbulence(2.1, 0.45, 20, <0, 0, 0>)", {-0.805942733, 0.656150123, -0.835562643}},
+    };
+    for (const Case& c : cases) {
+        const std::vector<double> got = components(value(c.call));
+        ASSERT_EQ(got.size(), 3u);
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], c.want[i], 1e-9) << c.call;
+    }
+}
+
 TEST_F(BuiltinTest, VectorFunctions) {
     EXPECT_DOUBLE_EQ(number("vdot(<1,2,3>,<4,5,6>)"), 32);
     EXPECT_EQ(vec("vcross(<1,0,0>,<0,1,0>)"), (V{0, 0, 1}));
