@@ -24,14 +24,15 @@ const std::vector<std::string> kData = {
     "pigment_pattern",   // read by the pattern it makes (build_pattern.cpp)
     "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
     "slope_map",         // read by its normal (build_normal.cpp)
-    "mesh_camera"};      // read by its camera (build_camera.cpp)
+    "mesh_camera",       // read by its camera (build_camera.cpp)
+    "tiles"};            // read by its texture (build_texture.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
     "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
     "density", "density_map", "density_file", "spline",
-    "function", "rainbow", "tiles"});
+    "function", "rainbow"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();

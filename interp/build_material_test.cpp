@@ -26,6 +26,20 @@ TEST_F(BuildMaterial, CheckerListFormWithColoursAndPigments) {
     EXPECT_EQ(p.pigment->pigment_map[1].item->pattern.type(), scene::PatternType::Checker);
 }
 
+TEST_F(BuildMaterial, TilesIsACheckerOfTwoTexturesSecondFirst) {
+    scene::Texture t = texture_of(
+        "sphere { 0, 1 texture { tiles { texture { pigment { rgb 1 } } tile2 "
+        "texture { pigment { rgb <1, 0, 0> } } } } }");
+    EXPECT_TRUE(std::holds_alternative<scene::pattern::Checker>(t.pattern.kind));
+    ASSERT_EQ(t.texture_map.size(), 2u);
+    EXPECT_TRUE(t.list_form);
+    // POV-Ray shows tile2's texture where checker shows its first entry (measured).
+    const scene::Pigment& first = *t.texture_map[0].item.back()->pigment;
+    EXPECT_EQ(first.colour.g, 0);
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { tiles { texture { } 1 } } }"),
+              "t.pov:1:45: error: unexpected a float in tiles");
+}
+
 TEST_F(BuildMaterial, GradientColourMapInWrittenOrder) {
     scene::Texture t = texture_of(
         "sphere { 0, 1 pigment { gradient <0,2,0> color_map { [0.5 rgb 1] [0.2 rgb 0] "

@@ -95,6 +95,24 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
             cur.expect_colour(item.keyword);  // preview colour: ignored
             continue;
         }
+        if (const BlockValue* b = block_of(item, "tiles")) {
+            // POV-Ray 3.0's `tiles { texture{A} tile2 texture{B} }`: `checker` of the two,
+            // B where checker puts its first entry (measured).
+            std::vector<Item> items;
+            for (const Item& it : b->items)
+                if (it.kind != Item::Kind::Keyword || it.keyword != "tile2") items.push_back(it);
+            ItemCursor tiles(cur.ctx(), items, "tiles", b->loc);
+            Item checker;
+            checker.kind = Item::Kind::Keyword;
+            checker.keyword = "checker";
+            checker.loc = b->loc;
+            read_pattern_keyword(tiles, checker, top.pattern, "");
+            read_list_form(tiles, top);
+            if (!tiles.at_end()) tiles.fail_unexpected(tiles.next(), {"texture", "tile2"});
+            if (top.texture_map.size() == 2)
+                std::swap(top.texture_map[0].item, top.texture_map[1].item);
+            continue;
+        }
         if (read_pattern_keyword(cur, item, top.pattern, "")) {
             if (is_list_pattern_word(item)) read_list_form(cur, top);
             if (const BlockValue* b = block_of(item, "object")) {
