@@ -104,7 +104,6 @@ glm::dvec3 axis_rotate(const glm::dvec3& p, glm::dvec3 axis, double deg) {
     return p * c + k_x_p * s + axis * (k_dot_p * (1 - c));
 }
 
-Value vec3(const glm::dvec3& v, SourceLoc loc) { return vec({v.x, v.y, v.z}, loc); }
 
 double dot(const glm::dvec3& a, const glm::dvec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
@@ -223,7 +222,7 @@ const BuiltinTable& builtin_table() {
                      }};
         t["vcross"] = {2, 2, false, [](Evaluator&, const ast::Node& c, Args& a) {
                            glm::dvec3 p = to_vec3(a[0]), q = to_vec3(a[1]);
-                           return vec3({p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x}, c.loc);
+                           return vec3_value({p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x}, c.loc);
                        }};
         t["vlength"] = {1, 1, false, [](Evaluator&, const ast::Node& c, Args& a) {
                             std::vector<double> v = components(a[0]);
@@ -238,22 +237,22 @@ const BuiltinTable& builtin_table() {
                                 params.lambda = static_cast<float>(to_float(a[0]));
                                 params.omega = static_cast<float>(to_float(a[1]));
                                 params.octaves = int(std::clamp(to_float(a[2]), 1.0, 10.0));
-                                return vec3(noise::dturbulence(to_vec3(a[3]), params), c.loc);
+                                return vec3_value(noise::dturbulence(to_vec3(a[3]), params), c.loc);
                             }};
         t["vnormalize"] = {1, 1, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
                                glm::dvec3 p = to_vec3(a[0]);
                                double len = std::sqrt(dot(p, p));
                                if (len == 0) {
                                    ev.warn(c.loc, "normalizing a zero-length vector");
-                                   return vec3({0, 0, 0}, c.loc);
+                                   return vec3_value({0, 0, 0}, c.loc);
                                }
-                               return vec3(p / len, c.loc);
+                               return vec3_value(p / len, c.loc);
                            }};
         t["vrotate"] = {2, 2, false, [](Evaluator&, const ast::Node& c, Args& a) {
-                            return vec3(rotate_xyz(to_vec3(a[0]), to_vec3(a[1])), c.loc);
+                            return vec3_value(rotate_xyz(to_vec3(a[0]), to_vec3(a[1])), c.loc);
                         }};
         t["vaxis_rotate"] = {3, 3, false, [](Evaluator&, const ast::Node& c, Args& a) {
-                                 return vec3(axis_rotate(to_vec3(a[0]), to_vec3(a[1]), to_float(a[2])), c.loc);
+                                 return vec3_value(axis_rotate(to_vec3(a[0]), to_vec3(a[1]), to_float(a[2])), c.loc);
                              }};
         // ---- strings
         t["asc"] = {1, 1, false, [](Evaluator&, const ast::Node& c, Args& a) {

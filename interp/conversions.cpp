@@ -15,6 +15,8 @@ void type_error(const Value& v, const char* expected) {
     throw LumenError(v.loc, std::string("expected ") + expected + ", found " + article + " " + found);
 }
 
+Value vec3_value(const glm::dvec3& v, SourceLoc loc) { return Value{VecN{{v.x, v.y, v.z}}, loc}; }
+
 void unsupported_error(const scene::Unsupported& u) {
     throw LumenError(u.loc, "'" + u.feature + "' is not supported yet");
 }

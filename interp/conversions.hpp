@@ -18,6 +18,8 @@ double to_float(const Value& v);
 bool to_bool(const Value& v);            // |x| > EPSILON
 VecN to_vector(const Value& v, size_t n);  // float -> n copies; vectors padded with 0 / cut
 glm::dvec3 to_vec3(const Value& v);
+// A 3-component vector value.
+Value vec3_value(const glm::dvec3& v, SourceLoc loc);
 scene::Colour to_colour(const Value& v);
 const std::string& to_string_value(const Value& v);
 int to_int(const Value& v);  // truncates toward zero, like POV's int()

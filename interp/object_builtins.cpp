@@ -12,8 +12,6 @@
 namespace lumen::interp {
 namespace {
 
-Value vec3(const glm::dvec3& v, SourceLoc loc) { return Value{VecN{{v.x, v.y, v.z}}, loc}; }
-
 const scene::ObjectPtr& object_arg(const Value& v) {
     if (v.is<scene::Unsupported>()) unsupported_error(v.as<scene::Unsupported>());
     if (!v.is<scene::ObjectPtr>()) type_error(v, "an object");
@@ -43,8 +41,8 @@ Value trace(Evaluator& ev, const ast::Node& c) {
     std::optional<scene::ObjectQueries::Hit> hit;
     const double len = glm::length(dir);
     if (len > 0 && std::isfinite(len)) hit = queries(ev, c).trace(o, start, dir / len);
-    if (normal_var) *normal_var = vec3(hit ? hit->normal : glm::dvec3(0), c.loc);
-    return vec3(hit ? hit->point : glm::dvec3(0), c.loc);
+    if (normal_var) *normal_var = vec3_value(hit ? hit->normal : glm::dvec3(0), c.loc);
+    return vec3_value(hit ? hit->point : glm::dvec3(0), c.loc);
 }
 
 }  // namespace
@@ -54,7 +52,7 @@ void add_object_builtins(BuiltinTable& t) {
         t[max ? "max_extent" : "min_extent"] = {
             1, 1, false, [max](Evaluator&, const ast::Node& c, Args& a) {
                 const Extents e = object_extents(*object_arg(a[0]));
-                return vec3(max ? e.max : e.min, c.loc);
+                return vec3_value(max ? e.max : e.min, c.loc);
             }};
     t["trace"] = {3, 4, true, [](Evaluator& ev, const ast::Node& c, Args&) { return trace(ev, c); }};
     t["inside"] = {2, 2, false, [](Evaluator& ev, const ast::Node& c, Args& a) {
