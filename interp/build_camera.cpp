@@ -13,6 +13,8 @@ namespace lumen::interp {
 
 namespace {
 
+constexpr int kMaxBlurSamples = 65536;
+
 const std::vector<std::string>& camera_keywords() {
     static const std::vector<std::string> k = [] {
         std::vector<std::string> v = transform_keywords();
@@ -113,6 +115,11 @@ scene::Camera build_camera(ItemCursor& cur) {
     bool have_look_at = false, have_up = false, have_right = false, type_given = false;
     std::optional<double> angle, vertical_angle;
     SourceLoc angle_loc;
+    // Focal blur: a declared camera's settings carry over to a copy.
+    const bool had_blur = cam.blur.has_value();
+    scene::Camera::FocalBlur blur = cam.blur.value_or(scene::Camera::FocalBlur{});
+    cam.blur.reset();
+    std::optional<glm::dvec3> focal_point;
     VectorLocs at{cam.loc, cam.loc, cam.loc};
     scene::Transform transform;
     auto unsupported = [&](const std::string& f, SourceLoc loc) {
@@ -168,13 +175,31 @@ scene::Camera build_camera(ItemCursor& cur) {
             angle_loc = item.loc;
             vertical_angle = cur.optional_float();  // spherical cameras
         }
-        else if (w == "focal_point") cur.expect_vector(w);
-        else if (w == "aperture") {
-            if (cur.expect_float(w) > 0) unsupported("focal blur", item.loc);
-        } else if (w == "blur_samples") {
-            cur.expect_float(w);
-            cur.optional_float();
-        } else if (w == "confidence" || w == "variance") cur.expect_float(w);
+        else if (w == "focal_point") focal_point = cur.expect_vector(w);
+        else if (w == "aperture") blur.aperture = cur.expect_float(w);
+        else if (w == "blur_samples") {
+            // `blur_samples [MIN,] MAX`: one number is the maximum, with no minimum.
+            // Each count is truncated and at least 1 (measured: 0 and negatives are POV's
+            // "Illegal number of focal blur samples"); lumen also bounds the maximum.
+            auto count = [&](double v) {
+                if (!(v >= 1)) cur.fail(item.loc, "illegal number of focal blur samples (at least 1)");
+                if (v > kMaxBlurSamples)
+                    cur.fail(item.loc, "too many focal blur samples (at most " +
+                                           std::to_string(kMaxBlurSamples) + ")");
+                return int(v);
+            };
+            const int first = count(cur.expect_float(w));
+            if (std::optional<double> second = cur.optional_float()) {
+                blur.min_samples = first;
+                blur.max_samples = count(*second);
+            } else {
+                blur.min_samples = 0;
+                blur.max_samples = first;
+            }
+            if (blur.min_samples > blur.max_samples)
+                cur.fail(item.loc, "focal blur samples minimum must not be larger than maximum");
+        } else if (w == "confidence") blur.confidence = cur.expect_float(w);
+        else if (w == "variance") blur.variance = cur.expect_float(w);
         else cur.fail_unexpected(item, camera_keywords());
     }
     if (cam.mesh) {  // only location.z and direction.z as written count (measured)
@@ -236,6 +261,15 @@ scene::Camera build_camera(ItemCursor& cur) {
     cam.up = transform.vector(cam.up);
     cam.right = transform.vector(cam.right);
     check_basis(cur, cam, at);
+    if (blur.aperture != 0 && blur.max_samples > 0) {
+        if (focal_point)
+            blur.focal_distance = glm::length(transform.point(*focal_point) - cam.location);
+        else if (!had_blur)
+            blur.focal_distance = glm::length(cam.direction);
+        if (!(blur.focal_distance > 0) || !std::isfinite(blur.focal_distance))
+            blur.focal_distance = glm::length(cam.direction);
+        cam.blur = blur;
+    }
     return cam;
 }
 

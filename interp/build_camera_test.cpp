@@ -83,8 +83,42 @@ TEST_F(BuildCamera, ProjectionsKeepTheirAnglesAndFocalBlurIsUnsupported) {
     EXPECT_NE(error_of("camera { cylinder 1 angle -10 }").find("must not be negative"),
               std::string::npos);
     EXPECT_TRUE(run("camera { normal { bumps 0.5 } }").camera.normal);
-    EXPECT_EQ(run("camera { aperture 0.5 focal_point 0 blur_samples 20 }").unsupported[0].feature,
-              "focal blur");
+}
+
+TEST_F(BuildCamera, FocalBlurSettings) {
+    const scene::Camera c =
+        run("camera { location -5*z look_at 0 aperture 0.5 focal_point <0,0,3> blur_samples 20 }")
+            .camera;
+    ASSERT_TRUE(c.blur);
+    EXPECT_DOUBLE_EQ(c.blur->aperture, 0.5);
+    EXPECT_EQ(c.blur->min_samples, 0);  // one number is the maximum
+    EXPECT_EQ(c.blur->max_samples, 20);
+    EXPECT_DOUBLE_EQ(c.blur->focal_distance, 8);
+    EXPECT_DOUBLE_EQ(c.blur->confidence, 0.9);
+    EXPECT_DOUBLE_EQ(c.blur->variance, 1e-4);
+    const scene::Camera d =
+        run("camera { direction 2*z aperture 1 blur_samples 4, 30 confidence 0.5 variance 0.01 }")
+            .camera;
+    ASSERT_TRUE(d.blur);
+    EXPECT_EQ(d.blur->min_samples, 4);
+    EXPECT_EQ(d.blur->max_samples, 30);
+    EXPECT_DOUBLE_EQ(d.blur->focal_distance, 2);  // no focal_point: |direction|
+    EXPECT_DOUBLE_EQ(d.blur->confidence, 0.5);
+    EXPECT_DOUBLE_EQ(d.blur->variance, 0.01);
+    // Off without samples or with aperture 0, as in POV-Ray.
+    EXPECT_FALSE(run("camera { aperture 1 }").camera.blur);
+    EXPECT_FALSE(run("camera { aperture 0 blur_samples 10 }").camera.blur);
+    EXPECT_TRUE(run("camera { aperture 0.5 blur_samples 20 }").unsupported.empty());
+    EXPECT_NE(error_of("camera { aperture 1 blur_samples 9, 3 }").find("must not be larger"),
+              std::string::npos);
+    for (const char* bad : {"0", "-1", "0, 4", "1e9"})
+        EXPECT_NE(error_of(std::string("camera { aperture 1 blur_samples ") + bad + " }")
+                      .find("focal blur samples"),
+                  std::string::npos)
+            << bad;
+    EXPECT_EQ(run("camera { aperture 1 blur_samples 3.7 }").camera.blur->max_samples, 3);
+    // A declared camera's focal blur carries over to a copy.
+    EXPECT_TRUE(run("#declare C = camera { aperture 1 blur_samples 7 }\ncamera { C }").camera.blur);
 }
 
 TEST_F(BuildCamera, BadAngleIsAnError) {

@@ -400,6 +400,16 @@ Json camera(const scene::Camera& c) {
     put_if(o, "angle", c.angle, d.angle);
     if (c.type == scene::CameraType::Spherical) put_if(o, "vertical_angle", c.vertical_angle, d.vertical_angle);
     if (c.normal) o.put("normal", Json::boolean(true));
+    if (c.blur) {
+        Json b;
+        b.put("aperture", Json::num(c.blur->aperture));
+        b.put("samples", Json::str(std::to_string(c.blur->min_samples) + ".." +
+                                   std::to_string(c.blur->max_samples)));
+        b.put("confidence", Json::num(c.blur->confidence));
+        b.put("variance", Json::num(c.blur->variance));
+        b.put("focal_distance", Json::num(c.blur->focal_distance));
+        o.put("focal_blur", b);
+    }
     put_if(o, "location", c.location, d.location);
     put_if(o, "direction", c.direction, d.direction);
     put_if(o, "up", c.up, d.up);

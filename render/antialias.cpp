@@ -57,11 +57,37 @@ ColourCompare colour_compare_for(const scene::Scene& scene, double aa_gamma) {
 
 BlockRenderer::BlockRenderer(const Tracer& tracer, const CameraModel& camera,
                              const RenderOptions& options, const ColourCompare& compare)
-    : tracer_(tracer), camera_(camera), options_(options), compare_(compare) {}
+    : tracer_(tracer), camera_(camera), options_(options), compare_(compare) {
+    if (camera.camera().blur && !camera.camera().mesh) focal_blur_.emplace(camera.camera());
+}
+
+// Focal blur: rays from the aperture in batches until the colour is settled (POV-Ray's
+// rule); a ray the projection does not have counts as black, fully transparent.
+Sample BlockRenderer::blurred_sample(double x, double y, ThreadState& state,
+                                     uint64_t& primary_rays) const {
+    const FocalBlur& blur = *focal_blur_;
+    double s1[4] = {0, 0, 0, 0}, s2[4] = {0, 0, 0, 0};
+    int n = 0;
+    while (n < blur.max_samples()) {
+        const std::optional<Ray> ray = blur.ray(camera_, x, y, n);
+        double c[4] = {0, 0, 0, 1};
+        if (ray) {
+            ++primary_rays;
+            const RayColour rc = tracer_.trace_primary(*ray, state);
+            c[0] = rc.rgb.x, c[1] = rc.rgb.y, c[2] = rc.rgb.z, c[3] = rc.transmit;
+        }
+        for (int k = 0; k < 4; ++k) s1[k] += c[k], s2[k] += c[k] * c[k];
+        const bool batch_end = blur.batch_ends(n);
+        ++n;
+        if (batch_end && blur.settled(n, s1, s2)) break;
+    }
+    return {glm::dvec3(s1[0], s1[1], s1[2]) / double(n), s1[3] / n};
+}
 
 Sample BlockRenderer::sample(double x, double y, ThreadState& state,
                              uint64_t& primary_rays) const {
     throw_if_stop_requested();  // SIGINT/SIGTERM: the render unwinds within a sample
+    if (focal_blur_) return blurred_sample(x, y, state, primary_rays);
     const int rays = camera_.rays_per_sample();
     if (rays == 1) {
         ++primary_rays;

@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include "render/camera.hpp"
+#include "render/focal_blur.hpp"
 #include "render/render.hpp"
 #include "render/tracer.hpp"
 
@@ -41,6 +42,7 @@ public:
 
 private:
     Sample sample(double x, double y, ThreadState& state, uint64_t& primary_rays) const;
+    Sample blurred_sample(double x, double y, ThreadState& state, uint64_t& primary_rays) const;
     void render_plain(int left, int top, int right, int bottom, Image& image, ThreadState& state,
                       uint64_t& primary_rays) const;
     void render_am1(int left, int top, int right, int bottom, Image& image, ThreadState& state,
@@ -52,6 +54,7 @@ private:
 
     const Tracer& tracer_;
     const CameraModel& camera_;
+    std::optional<FocalBlur> focal_blur_;
     RenderOptions options_;
     ColourCompare compare_;
 };

@@ -27,6 +27,7 @@ public:
     // shot); ray k of the sample at (x, y). Every other camera has one.
     int rays_per_sample() const { return rays_per_sample_; }
     std::optional<Ray> ray(double x, double y, int k) const;
+    const scene::Camera& camera() const { return camera_; }
 
 private:
     // The unnormalised direction (and, for the projections that move it, the origin) of the

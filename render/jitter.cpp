@@ -29,6 +29,8 @@ int jitter_index(double x, double y, int mul_x, int mul_y) {
     return kHash[(kHash[ix & 4095] ^ iy) & 4095] & 255;
 }
 
+int jitter_hash(int i) { return kHash[i & 4095]; }
+
 void jitter2d(double x, double y, double& jx, double& jy) {
     const std::array<float, 256>& table = jitter_table();
     jx = table[jitter_index(x, y, 1021, 1019)];

@@ -14,6 +14,9 @@ const std::array<float, 256>& jitter_table();
 // 0..4095. jx uses (1021, 1019), jy (1019, 1021).
 int jitter_index(double x, double y, int mul_x, int mul_y);
 
+// H[i & 4095]: the permutation itself (focal blur picks its sub-pixel offsets with it).
+int jitter_hash(int i);
+
 // The jitter (jx, jy) ∈ [−0.5, 0.5)² of the sample position (x, y); the caller scales it by
 // the jitter amount and the sample spacing.
 void jitter2d(double x, double y, double& jx, double& jy);

@@ -59,7 +59,18 @@ struct Camera {
         bool reverse = false;  // direction.z < 0
     };
     std::optional<MeshRays> mesh;
-    std::optional<Unsupported> unsupported;  // e.g. mesh_camera, focal blur
+    // Focal blur (`aperture` not 0 and `blur_samples` above 0): each sample averages rays from
+    // a disc of diameter `aperture` around the location, all aimed at the point the unblurred
+    // ray meets at `focal_distance` along the view direction, until the colour's variance is
+    // below `variance` with `confidence` or `max_samples` rays are traced.
+    struct FocalBlur {
+        double aperture = 0;
+        int min_samples = 0, max_samples = 0;
+        double confidence = 0.9, variance = 1.0 / 10000;
+        double focal_distance = 1;  // |focal_point - location|, |direction| by default
+    };
+    std::optional<FocalBlur> blur;
+    std::optional<Unsupported> unsupported;  // e.g. a mesh_camera distribution
     SourceLoc loc;
 };
 
