@@ -107,6 +107,7 @@ scene::ObjectPtr build_mesh(ItemCursor& cur);   // build_mesh.cpp
 scene::ObjectPtr build_mesh2(ItemCursor& cur);
 scene::ObjectPtr build_text(ItemCursor& cur);   // build_text.cpp
 scene::ObjectPtr build_prism(ItemCursor& cur);  // build_swept.cpp
+scene::ObjectPtr build_bicubic_patch(ItemCursor& cur);  // build_bicubic_patch.cpp, as a mesh
 scene::ObjectPtr build_lathe(ItemCursor& cur);
 scene::ObjectPtr build_sor(ItemCursor& cur);
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);

@@ -163,8 +163,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Polygon>, ItemCursor& 
     return share(object_of(cur, read_polygon(cur)));
 }
 
-// mesh and mesh2 (build_mesh.cpp).
+// mesh and mesh2 (build_mesh.cpp), and bicubic_patch, which renders as the mesh of its
+// subdivision (build_bicubic_patch.cpp).
 scene::ObjectPtr read_primitive(std::type_identity<scene::Mesh>, ItemCursor& cur) {
+    if (cur.what() == "bicubic_patch") return build_bicubic_patch(cur);
     return cur.what() == "mesh" ? build_mesh(cur) : build_mesh2(cur);
 }
 

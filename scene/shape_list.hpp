@@ -23,7 +23,7 @@
     X(Disc, "disc")                            \
     X(Triangle, "triangle", "smooth_triangle") \
     X(Polygon, "polygon")                      \
-    X(Mesh, "mesh", "mesh2")                   \
+    X(Mesh, "mesh", "mesh2", "bicubic_patch")  \
     X(Text, "text")                            \
     X(Prism, "prism")                          \
     X(Lathe, "lathe")                          \
@@ -56,7 +56,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "bicubic_patch", "blob", "height_field", "isosurface", "julia_fractal", "lemon",
+    "blob", "height_field", "isosurface", "julia_fractal", "lemon",
     "light_group", "ovus", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
