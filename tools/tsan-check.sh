@@ -26,6 +26,7 @@ for scene in showcase glass lights csg patterns antialias irid; do
     check "$scene" "$root/examples/$scene.pov" +W96 +H72 +A0.3
 done
 check animation "$root/examples/animation.pov" +W48 +H36 +KFI1 +KFF3
+check focal-blur "$root/tests/cameras/focal_blur.pov" +W48 +H36 +A0.3 Declare=S=60
 cornell=/usr/share/povray-3.7/scenes/radiosity/cornell.pov
 check cornell-preview "$cornell" +W60 +H60 -A Radiosity_Display=preview
 check cornell-gather "$cornell" +W60 +H60 -A Radiosity_Display=gather

@@ -20,7 +20,7 @@ Aabb bounds(const LatheShape& s);
 inline Aabb solid_bounds(const LatheShape& s) { return bounds(s); }
 
 template <>
-struct ShapeTraits<scene::Lathe> : PreparedBy<scene::Lathe, LatheShape, make_lathe, kDepthSwept> {
+struct ShapeTraits<scene::Lathe> : PreparedBy<scene::Lathe, LatheShape, make_lathe, &kDepthSwept> {
     // Not baked: traced in the lathe's own space, about its axis.
     static bool bake(const scene::Lathe&, const scene::Transform&, LatheShape&) { return false; }
 };

@@ -22,7 +22,7 @@ inline Aabb solid_bounds(const PolygonShape&) { return {}; }
 
 template <>
 struct ShapeTraits<scene::Polygon>
-    : PreparedBy<scene::Polygon, PolygonShape, make_polygon, kDepthPolygon> {
+    : PreparedBy<scene::Polygon, PolygonShape, make_polygon, &kDepthPolygon> {
     static bool bake(const scene::Polygon& p, const scene::Transform& xf, PolygonShape& out);
 };
 

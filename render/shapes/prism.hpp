@@ -21,7 +21,7 @@ Aabb bounds(const PrismShape& s);
 inline Aabb solid_bounds(const PrismShape& s) { return bounds(s); }
 
 template <>
-struct ShapeTraits<scene::Prism> : PreparedBy<scene::Prism, PrismShape, make_prism, kDepthSwept> {
+struct ShapeTraits<scene::Prism> : PreparedBy<scene::Prism, PrismShape, make_prism, &kDepthSwept> {
     // Not baked: the outline is traced in the prism's own space under its transform.
     static bool bake(const scene::Prism&, const scene::Transform&, PrismShape&) { return false; }
 };

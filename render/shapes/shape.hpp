@@ -29,10 +29,10 @@ struct ShapeHit {
 
 // Minimum depths of POV-Ray's objects: hits closer to the ray origin than this are ignored
 // (POV-Ray's per-object DEPTH_TOLERANCE values).
-constexpr double kDepthDefault = 1e-6;  // sphere, plane, box, disc, triangle, mesh, ...
-constexpr double kDepthTorus = 1e-4;
-constexpr double kDepthSwept = 1e-4;  // prism, lathe, sor
-constexpr double kDepthPolygon = 1e-8;
+inline constexpr double kDepthDefault = 1e-6;  // sphere, plane, box, disc, triangle, mesh, ...
+inline constexpr double kDepthTorus = 1e-4;
+inline constexpr double kDepthSwept = 1e-4;  // prism, lathe, sor
+inline constexpr double kDepthPolygon = 1e-8;
 
 // The render side of scene shape T. Only the specialisations exist, one in each shape's
 // header, each with:
@@ -43,11 +43,12 @@ constexpr double kDepthPolygon = 1e-8;
 //       the same shape in world space, or false: xf stays a per-ray transform
 template <class T> struct ShapeTraits;
 
-// The common case: the prepared shape made by `make` from the scene shape alone.
-template <class T, class P, P (*make)(const T&), double depth = kDepthDefault>
+// The common case: the prepared shape made by `make` from the scene shape alone. The depth
+// is passed by address: clang before 18 takes no floating-point template arguments.
+template <class T, class P, P (*make)(const T&), const double* depth = &kDepthDefault>
 struct PreparedBy {
     using Prepared = P;
-    static constexpr double min_depth = depth;
+    static constexpr double min_depth = *depth;
     static P prepare(const T& shape, bool) { return make(shape); }
 };
 

@@ -28,7 +28,7 @@ Aabb bounds(const SorShape& s);
 inline Aabb solid_bounds(const SorShape& s) { return bounds(s); }
 
 template <>
-struct ShapeTraits<scene::Sor> : PreparedBy<scene::Sor, SorShape, make_sor, kDepthSwept> {
+struct ShapeTraits<scene::Sor> : PreparedBy<scene::Sor, SorShape, make_sor, &kDepthSwept> {
     // Not baked: traced in its own space, about its axis.
     static bool bake(const scene::Sor&, const scene::Transform&, SorShape&) { return false; }
 };

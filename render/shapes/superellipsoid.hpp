@@ -26,12 +26,12 @@ constexpr int kMaxSuperellipsoidHits = 22;  // two per piece of the ray at most
 int superellipsoid_hits(const SuperellipsoidShape& s, const glm::dvec3& o, const glm::dvec3& d,
                         double len, double* ks);
 
-constexpr double kDepthSuperellipsoid = 1e-4;
+inline constexpr double kDepthSuperellipsoid = 1e-4;
 
 template <>
 struct ShapeTraits<scene::Superellipsoid>
     : PreparedBy<scene::Superellipsoid, SuperellipsoidShape, make_superellipsoid,
-                 kDepthSuperellipsoid> {
+                 &kDepthSuperellipsoid> {
     // Not baked: traced in its own space, where the cutting planes are.
     static bool bake(const scene::Superellipsoid&, const scene::Transform&, SuperellipsoidShape&) {
         return false;

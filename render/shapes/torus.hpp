@@ -12,7 +12,7 @@ Aabb bounds(const TorusShape& s);
 inline Aabb solid_bounds(const TorusShape& s) { return bounds(s); }
 
 template <>
-struct ShapeTraits<scene::Torus> : PreparedBy<scene::Torus, TorusShape, make_torus, kDepthTorus> {
+struct ShapeTraits<scene::Torus> : PreparedBy<scene::Torus, TorusShape, make_torus, &kDepthTorus> {
     // Not baked: TorusShape has no centre or axis to carry a transform (traced in object space).
     static bool bake(const scene::Torus&, const scene::Transform&, TorusShape&) { return false; }
 };
