@@ -20,26 +20,26 @@ using Net = std::array<std::array<glm::dvec3, 4>, 4>;
 
 constexpr int kMaxSteps = 10;  // 4^10 leaves; POV-Ray has no bound (steps 12 took it 3.7 GB)
 
-glm::dvec3 bernstein(double t) { return {(1 - t) * (1 - t), 2 * t * (1 - t), t * t}; }
+// The cubic Bernstein weights at t.
+std::array<double, 4> cubic_weights(double t) {
+    const double s = 1 - t;
+    return {s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t};
+}
+
+// The derivative at t of the cubic Bezier curve through p[0..3].
+glm::dvec3 cubic_tangent(const std::array<glm::dvec3, 4>& p, double t) {
+    const double s = 1 - t;
+    return 3.0 * (s * s * (p[1] - p[0]) + 2 * s * t * (p[2] - p[1]) + t * t * (p[3] - p[2]));
+}
 
 // The patch's exact normal at (u, v): S_u × S_v, (1, 0, 0) where it vanishes (POV-Ray's rule).
 glm::dvec3 patch_normal(const Net& cp, double u, double v) {
-    auto point_row = [&](int i, double t, bool along_u) {
-        // Derivative of the cubic through four points at t, and the cubic itself.
-        glm::dvec3 p[4];
-        for (int k = 0; k < 4; ++k) p[k] = along_u ? cp[k][i] : cp[i][k];
-        const glm::dvec3 b = bernstein(t);
-        return 3.0 * (b.x * (p[1] - p[0]) + b.y * (p[2] - p[1]) + b.z * (p[3] - p[2]));
-    };
-    auto cubic = [](double t, int k) {
-        const double s = 1 - t;
-        const double w[4] = {s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t};
-        return w[k];
-    };
+    const std::array<double, 4> wu = cubic_weights(u), wv = cubic_weights(v);
     glm::dvec3 su(0), sv(0);
     for (int k = 0; k < 4; ++k) {
-        su += cubic(v, k) * point_row(k, u, true);   // d/du of the column k, weighted in v
-        sv += cubic(u, k) * point_row(k, v, false);  // d/dv of the row k, weighted in u
+        const std::array<glm::dvec3, 4> column = {cp[0][k], cp[1][k], cp[2][k], cp[3][k]};
+        su += wv[k] * cubic_tangent(column, u);  // d/du of column k, weighted in v
+        sv += wu[k] * cubic_tangent(cp[k], v);   // d/dv of row k, weighted in u
     }
     const glm::dvec3 n = glm::cross(su, sv);
     const double nn = glm::dot(n, n);
@@ -61,7 +61,10 @@ void split(const Net& net, bool in_u, Net& lo, Net& hi) {
         glm::dvec3 p[4], a[4], b[4];
         for (int m = 0; m < 4; ++m) p[m] = in_u ? net[m][k] : net[k][m];
         halve(p, a, b);
-        for (int m = 0; m < 4; ++m) (in_u ? lo[m][k] : lo[k][m]) = a[m], (in_u ? hi[m][k] : hi[k][m]) = b[m];
+        for (int m = 0; m < 4; ++m) {
+            (in_u ? lo[m][k] : lo[k][m]) = a[m];
+            (in_u ? hi[m][k] : hi[k][m]) = b[m];
+        }
     }
 }
 
@@ -92,23 +95,23 @@ struct Tessellation {
     const scene::Transform& to_world;
     scene::Mesh& mesh;
 
-    void corner(const glm::dvec3& p, double u, double v) {
-        mesh.vertices.push_back(p);
-        mesh.normals.push_back(patch_normal(patch, u, v));
-    }
-    void triangle(const glm::dvec3 (&p)[3], const glm::dvec2 (&uv)[3]) {
-        const glm::dvec3 b0 = p[1] - p[0], b1 = p[2] - p[0], n = glm::cross(b0, b1);
-        if (glm::dot(n, n) <= 1e-10 * glm::dot(b0, b0) * glm::dot(b1, b1)) return;  // POV drops it
-        scene::Mesh::Face f;
-        for (int k = 0; k < 3; ++k) {
-            f.v[k] = f.n[k] = int(mesh.vertices.size());
-            corner(p[k], uv[k].x, uv[k].y);
-        }
-        mesh.faces.push_back(f);
-    }
+    // A leaf's four corners, each with the patch's exact normal, and its two triangles
+    // (C00, C03, C33) and (C00, C33, C30); a degenerate triangle is dropped, as POV drops it.
     void leaf(const Net& net, double u0, double u1, double v0, double v1) {
-        triangle({net[0][0], net[0][3], net[3][3]}, {{u0, v0}, {u0, v1}, {u1, v1}});
-        triangle({net[0][0], net[3][3], net[3][0]}, {{u0, v0}, {u1, v1}, {u1, v0}});
+        const int base = int(mesh.vertices.size());
+        const glm::dvec3 c[4] = {net[0][0], net[0][3], net[3][3], net[3][0]};
+        const glm::dvec2 uv[4] = {{u0, v0}, {u0, v1}, {u1, v1}, {u1, v0}};
+        for (int k = 0; k < 4; ++k) {
+            mesh.vertices.push_back(c[k]);
+            mesh.normals.push_back(patch_normal(patch, uv[k].x, uv[k].y));
+        }
+        for (const std::array<int, 3>& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
+            const glm::dvec3 b0 = c[t[1]] - c[t[0]], b1 = c[t[2]] - c[t[0]], n = glm::cross(b0, b1);
+            if (glm::dot(n, n) <= 1e-10 * glm::dot(b0, b0) * glm::dot(b1, b1)) continue;
+            scene::Mesh::Face f;
+            for (int k = 0; k < 3; ++k) f.v[k] = f.n[k] = base + t[k];
+            mesh.faces.push_back(f);
+        }
     }
     void node(const Net& net, double u0, double u1, double v0, double v1, int depth) {
         const double flat = flatness_of(net, to_world);

@@ -141,13 +141,15 @@ FocalBlur::FocalBlur(const scene::Camera& camera) {
     for (end += 4; end <= max_; end += 4) batch_end_[size_t(end - 1)] = 1;
 
     // The variance a mean of n samples may keep: chi-square quantiles at the confidence,
-    // scaled so that the full count of samples is held to `variance` itself.
+    // scaled so that the full count of samples is held to `variance` itself. Only the counts
+    // that end a batch are ever tested, so only theirs are computed (each is a root search).
     threshold_.assign(size_t(max_), 0);
     if (max_ > 1) {
         const double full = chi_square_upper_quantile(max_ - 1, b.confidence);
         for (int i = 0; i < max_; ++i)
-            threshold_[size_t(i)] =
-                full > 0 ? b.variance * chi_square_upper_quantile(i + 1, b.confidence) / full : 0;
+            if (batch_ends(i) && full > 0)
+                threshold_[size_t(i)] =
+                    b.variance * chi_square_upper_quantile(i + 1, b.confidence) / full;
     }
 
     jitter_scale_ = 2 * (max_ == grid.size && grid.jitter > 0 ? grid.jitter

@@ -30,7 +30,8 @@ public:
     // Whether a batch of samples ends after sample n (0-based): the variance is tested there.
     bool batch_ends(int n) const { return n + 1 == max_ || batch_end_[size_t(n)]; }
     // Whether the mean of n samples with sums s1 and squared sums s2 (r, g, b, t) is
-    // settled: each channel's variance of the mean below the threshold for n samples.
+    // settled: each channel's variance of the mean below the threshold for n samples. Only
+    // counts that end a batch (batch_ends(n - 1)) have a threshold; others never settle.
     bool settled(int n, const double s1[4], const double s2[4]) const;
     // Ray n of the sample at image position (x, y) (CameraModel's coordinates); none where
     // the projection has none there.
