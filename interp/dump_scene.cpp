@@ -349,6 +349,25 @@ struct ShapeDumper {
         o.put("e", Json::num(s.e));
         o.put("n", Json::num(s.n));
     }
+    void operator()(const scene::Blob& b) const {
+        o.put("type", Json::str("blob"));
+        o.put("threshold", Json::num(b.threshold));
+        Json cs = Json::array();
+        for (const auto& c : b.components) {
+            Json j;
+            j.put("kind", Json::str(c.cylinder ? "cylinder" : "sphere"));
+            j.put(c.cylinder ? "base" : "center", vec(c.a));
+            if (c.cylinder) j.put("cap", vec(c.b));
+            j.put("radius", Json::num(c.radius));
+            j.put("strength", Json::num(c.strength));
+            if (c.transform) put_transform(j, *c.transform);
+            put_nonempty(j, "texture", layered(c.texture));
+            cs.push(j);
+        }
+        o.put("components", cs);
+        if (b.sturm) o.put("sturm", Json::boolean(true));
+        if (!b.hierarchy) o.put("hierarchy", Json::boolean(false));
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

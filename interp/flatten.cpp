@@ -150,6 +150,10 @@ Value Evaluator::eval_block(const ast::Node& block) {
     // pattern: its block is kept for the pattern to read (the object, then the list entries).
     const bool object_pattern = kw == "object" && &block == block_item_ && !open_blocks_.empty() &&
                                 is_pattern_owner(open_blocks_.back());
+    // A blob's `sphere { C, R, S }` and `cylinder { A, B, R, S }` are components, not shapes:
+    // kept for the blob's reader (build_blob.cpp).
+    const bool blob_component = (kw == "sphere" || kw == "cylinder") && &block == block_item_ &&
+                                !open_blocks_.empty() && open_blocks_.back() == "blob";
     block_item_ = nullptr;
     open_blocks_.push_back(kw);
     struct Close {
@@ -157,7 +161,8 @@ Value Evaluator::eval_block(const ast::Node& block) {
         ~Close() { blocks.pop_back(); }
     } close{open_blocks_};
     BlockValue bv{kw, flatten_sealed(block.children), block.loc};
-    if (object_pattern) return Value{std::make_shared<const BlockValue>(std::move(bv)), block.loc};
+    if (object_pattern || blob_component)
+        return Value{std::make_shared<const BlockValue>(std::move(bv)), block.loc};
     Value v = build_block(ctx, bv);
     if (v.loc.line == 0) v.loc = block.loc;
     return v;

@@ -200,6 +200,54 @@ struct ShapeBoxes {
     ShapeBox operator()(const scene::Superellipsoid&) const {
         return {{glm::dvec3(-1.0001), glm::dvec3(1.0001)}};
     }
+    // POV-Ray's box: each element's bounding sphere in the element's own space (a sphere; a
+    // cylinder's, centred on its axis and reaching its ends' rims; the end caps'), carried
+    // into the blob's space as a sphere again: its box through the element's transform, then
+    // the largest half-width of that box as the radius (measured: a scaled, rotated sphere
+    // gets a cube). A cylinder's space turns z onto the axis by the smallest rotation.
+    ShapeBox operator()(const scene::Blob& b) const {
+        Extents out = empty_box();
+        auto add = [&](const glm::dmat4& to_blob, bool exact, const glm::dvec3& centre, double r) {
+            Extents e{centre - glm::dvec3(r), centre + glm::dvec3(r)};
+            if (!exact) {
+                e = corners(e, [&](const glm::dvec3& p) { return glm::dvec3(to_blob * glm::dvec4(p, 1)); });
+                const glm::dvec3 half = 0.5 * (e.max - e.min), mid = 0.5 * (e.max + e.min);
+                const double reach = std::max({half.x, half.y, half.z});
+                e = {mid - glm::dvec3(reach), mid + glm::dvec3(reach)};
+            }
+            expand(out, e.min);
+            expand(out, e.max);
+        };
+        for (const auto& c : b.components) {
+            const glm::dmat4 placed = c.transform ? c.transform->m : glm::dmat4(1.0);
+            if (!c.cylinder) {
+                add(placed, !c.transform, c.a, c.radius);
+                continue;
+            }
+            const double len = glm::length(c.b - c.a);
+            const glm::dvec3 u = (c.b - c.a) / len;
+            // The rotation taking z to the axis about their common perpendicular.
+            const bool along_z = std::fabs(u.z) > 1 - 1e-10;
+            const glm::dvec3 k = along_z ? glm::dvec3(1, 0, 0)
+                                         : glm::normalize(glm::dvec3(-u.y, u.x, 0));
+            const double cos_a = along_z ? (u.z < 0 ? -1 : 1) : u.z;
+            const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
+            glm::dmat4 frame(1.0);
+            for (int col = 0; col < 3; ++col) {
+                glm::dvec3 e(0);
+                e[col] = 1;
+                const glm::dvec3 r = cos_a * e + sin_a * glm::cross(k, e) +
+                                     (1 - cos_a) * glm::dot(k, e) * k;
+                frame[col] = glm::dvec4(r, 0);
+            }
+            frame[3] = glm::dvec4(c.a, 1);
+            add(placed * frame, false, {0, 0, 0}, c.radius);
+            add(placed * frame, false, {0, 0, len}, c.radius);
+            add(placed * frame, false, {0, 0, 0.5 * len},
+                std::sqrt(c.radius * c.radius + 0.25 * len * len));
+        }
+        return {out};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

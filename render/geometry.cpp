@@ -119,6 +119,15 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
     hit.double_illuminate = leaf.double_illuminate;
     hit.no_radiosity = leaf.no_radiosity;
     hit.hollow = leaf.hollow;
+    hit.textured_blob = nullptr;
+    if (leaf.kind == NodeKind::Shape) {
+        const auto* blob = std::get_if<BlobShape>(&store.shapes[leaf.shape]);
+        if (blob && blob->textured) {
+            hit.textured_blob = blob;
+            hit.local_point =
+                leaf.identity ? hit.point : store.transforms[leaf.xf].inv_point(hit.point);
+        }
+    }
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 namespace lumen::render {
 
+struct BlobShape;
+
 struct Hit {
     double t = 0;                 // distance along the (unit) ray
     glm::dvec3 point{0};          // world-space hit point
@@ -29,6 +31,10 @@ struct Hit {
     // Use these rather than object->no_image and friends.
     bool no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;
+    // A blob whose components have textures of their own, which shading blends by their
+    // densities at `local_point` (the hit in the blob's space); null otherwise.
+    const BlobShape* textured_blob = nullptr;
+    glm::dvec3 local_point{0};
 };
 
 }  // namespace lumen::render

@@ -1,6 +1,7 @@
 // The primitive shapes prepared for intersection, in object space: one header and source file
 // per shape of scene/shape_list.hpp in render/shapes/ (shape.hpp says what each provides).
 #pragma once
+#include "render/shapes/blob.hpp"
 #include "render/shapes/box.hpp"
 #include "render/shapes/cone.hpp"
 #include "render/shapes/disc.hpp"

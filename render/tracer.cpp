@@ -13,6 +13,7 @@
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
+#include "render/shapes/blob.hpp"
 #include "render/sky.hpp"
 #include "render/texture_layers.hpp"
 
@@ -153,6 +154,7 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
 
 RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, const Context& ctx,
                         ThreadState& state) const {
+    if (hit.textured_blob) return shade_blob(ray, hit, at, ctx, state);
     const scene::LayeredTexture* texture = hit.texture;
     if (!is_texture_map(texture)) return shade_layers(ray, hit, texture, at, ctx, state);
     // texture_map: shade both neighbouring entries, at the map's pattern point and in its
@@ -195,6 +197,43 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, 
         const RayColour c = entry(idx[k], ws[k]);
         out.rgb += ws[k] * c.rgb;
         out.transmit += ws[k] * c.transmit;
+    }
+    return out;
+}
+
+// A blob with textured components: each texture present at the point shaded and weighted by
+// its components' share of the density there (POV-Ray's blob texture blending); components
+// without a texture of their own count for the blob's.
+RayColour Tracer::shade_blob(const Ray& ray, const Hit& hit, const TexturePoint& at,
+                             const Context& ctx, ThreadState& state) const {
+    constexpr int kMaxTextures = 64;  // beyond this many at one point, the rest join the last
+    const scene::LayeredTexture* textures[kMaxTextures];
+    double weights[kMaxTextures];
+    int n = 0;
+    double total = 0;
+    const BlobShape& blob = *hit.textured_blob;
+    for_each_blob_density(blob, hit.local_point, [&](int component, double w) {
+        const scene::LayeredTexture* t = blob.textures[component];
+        if (!t) t = hit.texture;
+        total += w;
+        for (int i = 0; i < n; ++i)
+            if (textures[i] == t) { weights[i] += w; return; }
+        if (n == kMaxTextures) { weights[n - 1] += w; return; }
+        textures[n] = t;
+        weights[n++] = w;
+    });
+    Hit h = hit;
+    h.textured_blob = nullptr;
+    if (n == 0 || !(total > 0)) return shade(ray, h, at, ctx, state);
+    RayColour out;
+    for (int i = 0; i < n; ++i) {
+        const double w = weights[i] / total;
+        Context sub = ctx;
+        sub.weight *= w;
+        h.texture = textures[i];
+        const RayColour c = shade(ray, h, at, sub, state);
+        out.rgb += w * c.rgb;
+        out.transmit += w * c.transmit;
     }
     return out;
 }

@@ -51,6 +51,8 @@ private:
         glm::dvec3 point;
         NormalFrame frame;
     };
+    RayColour shade_blob(const Ray& ray, const Hit& hit, const TexturePoint& at,
+                         const Context& ctx, ThreadState& state) const;
     RayColour shade(const Ray& ray, const Hit& hit, const TexturePoint& at, const Context& ctx,
                     ThreadState& state) const;
     RayColour shade_layers(const Ray& ray, const Hit& hit, const scene::LayeredTexture* texture,

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/texture.hpp"
+#include "scene/transform.hpp"
 
 namespace lumen::scene {
 
@@ -173,6 +174,28 @@ struct Quadric {
 struct Superellipsoid {
     double e = 1, n = 1;
     LUMEN_FIELDS(f("e", s.e), f("n", s.n))
+};
+
+// blob { threshold T sphere { <C>, R, [strength] S } cylinder { <A>, <B>, R, S } ... }: the
+// surface where the components' summed density S (1 - d^2/R^2)^2 (d < R) equals T. A
+// component's transform (written inside its block) places it in the blob's space; its
+// texture, if any, is blended with the others' by density where the surface is shaded.
+struct Blob {
+    struct Component {
+        bool cylinder = false;
+        glm::dvec3 a{0}, b{0};  // the centre (sphere), or the axis ends (cylinder)
+        double radius = 1, strength = 1;
+        std::optional<Transform> transform;  // component -> blob space
+        LayeredTexture texture;              // empty: the blob's texture
+        LUMEN_FIELDS(f("cylinder", s.cylinder), f("a", s.a), f("b", s.b),
+                     f("radius", s.radius), f("strength", s.strength),
+                     f("transform", s.transform), f("texture", s.texture))
+    };
+    double threshold = 1;
+    std::vector<Component> components;
+    bool sturm = false, hierarchy = true;
+    LUMEN_FIELDS(f("threshold", s.threshold), f("components", s.components),
+                 f("sturm", s.sturm), f("hierarchy", s.hierarchy))
 };
 
 #undef LUMEN_FIELDS

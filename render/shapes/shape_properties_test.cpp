@@ -118,6 +118,33 @@ scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
     return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
 }
 scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
+// Two spheres joined by a cylinder, a negative sphere biting one, one component scaled.
+scene::Blob sample_shape(std::type_identity<scene::Blob>) {
+    scene::Blob b;
+    b.threshold = 0.5;
+    auto sphere = [](glm::dvec3 c, double r, double s) {
+        scene::Blob::Component k;
+        k.a = k.b = c;
+        k.radius = r;
+        k.strength = s;
+        return k;
+    };
+    b.components.push_back(sphere({-0.8, 0, 0}, 1.2, 1));
+    b.components.push_back(sphere({0.8, 0.1, 0}, 1.0, 1.5));
+    b.components.push_back(sphere({0.8, 0.9, 0}, 0.5, -1));
+    scene::Blob::Component cyl;
+    cyl.cylinder = true;
+    cyl.a = {-1, -0.5, 0};
+    cyl.b = {1, -0.5, 0.2};
+    cyl.radius = 0.6;
+    b.components.push_back(cyl);
+    scene::Blob::Component squashed = sphere({0, 0.6, 0}, 1, 1);
+    squashed.transform = scene::Transform{glm::dmat4(1.0), glm::dmat4(1.0)};
+    squashed.transform->m[0][0] = 1.5;
+    squashed.transform->inv[0][0] = 1 / 1.5;
+    b.components.push_back(squashed);
+    return b;
+}
 
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
@@ -233,8 +260,9 @@ TYPED_TEST_SUITE(ShapeProperties, Listed);
 TYPED_TEST(ShapeProperties, HitsLieOnTheSurfaceInsideTheBounds) {
     this->for_each_hit([](const Instance& in, const Ray& r, const WorldHit& h) {
         EXPECT_TRUE(in.node().surface.contains(h.point)) << "t " << h.t;
-        // Starting again just before the hit finds it again, just ahead.
-        const double back = 1e-3;
+        // Starting again just before the hit finds it again, just ahead (beyond the shape's
+        // minimum depth: a blob ignores hits nearer than 1e-2 in its own space).
+        const double back = std::max(1e-3, 5 * in.node().min_depth);
         auto again = in.hit({h.point - back * r.dir, r.dir}, 0);
         ASSERT_TRUE(again) << "t " << h.t;
         EXPECT_NEAR(again->t, back, 1e-7);
@@ -248,7 +276,7 @@ TYPED_TEST(ShapeProperties, NormalsAreUnitAndFaceOutward) {
         const glm::dvec3 n = h.normal / len;
         EXPECT_NEAR(glm::length(n), 1, 1e-12);
         // Perpendicular to the surface: from a step out along it, straight back hits it there.
-        const double step = 1e-3;
+        const double step = std::max(1e-3, 5 * in.node().min_depth);
         auto back = in.hit({h.point + step * n, -n}, 0);
         ASSERT_TRUE(back);
         EXPECT_NEAR(back->t, step, 1e-7);
@@ -278,6 +306,9 @@ TYPED_TEST(ShapeProperties, InsideAgreesWithRayParity) {
                 ++crossings;
                 from = h->t + 1e-7 * (1 + h->t);
             }
+            // A crossing nearer than the minimum depth is not reported: leave such points out.
+            const double min_depth = in.node().min_depth;
+            if (in.inside(r.origin) != in.inside(r.origin + 5 * min_depth * r.dir)) near_surface = true;
             if (near_surface) continue;
             ++tested;
             inside += in.inside(r.origin);

@@ -1,0 +1,390 @@
+// blob: POV-Ray's interval sweep. Its tolerances decide which grazing rays hit and where the
+// surface starts near the ray origin, so they are POV-Ray's: elements are entered where the
+// ray's discriminant reaches 1e-10, hits nearer than 1e-2 are ignored, the solver drops a
+// root at 0 below 1e-11, and a point is inside where the density exceeds threshold - 1e-6.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "render/pov_polynomial.hpp"
+#include "render/shapes/blob.hpp"
+
+namespace lumen::render {
+
+namespace {
+
+constexpr double kEpsilon = 1e-10;
+constexpr double kSmallTolerance = 1e-3;  // the ray start moves to the first entry beyond it
+constexpr double kRootTolerance = 1e-11;
+constexpr double kInsideTolerance = 1e-6;
+constexpr double kMaxDistance = 1e7;
+constexpr int kLeafSize = 4;
+
+using Kind = BlobElement::Kind;
+
+glm::dvec3 to_element(const BlobShape& s, const BlobElement& e, const glm::dvec3& p) {
+    return e.transform < 0 ? p : s.to_component[e.transform].inv_point(p);
+}
+glm::dvec3 to_element_dir(const BlobShape& s, const BlobElement& e, const glm::dvec3& d) {
+    return e.transform < 0 ? d : s.to_component[e.transform].inv_vector(d);
+}
+
+// The vector from the element's nearest centre or axis point to q (element space), and
+// whether q is in the element's part of space (a cap's half, the cylinder's length). The
+// parts share their boundary planes, as in POV-Ray: a point exactly level with a cylinder's
+// end gets the density of both (a box face there shows a wider cut, measured).
+bool element_offset(const BlobElement& e, const glm::dvec3& q, glm::dvec3& v) {
+    v = q - e.centre;
+    if (e.kind == Kind::Sphere) return true;
+    const double z = glm::dot(v, e.axis);
+    switch (e.kind) {
+        case Kind::Cylinder:
+            if (z < 0 || z > e.length) return false;
+            v -= z * e.axis;
+            return true;
+        case Kind::BaseCap: return z <= 0;
+        case Kind::ApexCap:
+            if (z < e.length) return false;
+            v -= e.length * e.axis;
+            return true;
+        default: return true;
+    }
+}
+
+// Where the ray o + t d (element space, d not unit) is inside the element: [t0, t1].
+bool element_interval(const BlobElement& e, const glm::dvec3& o, const glm::dvec3& d,
+                      double& t0, double& t1) {
+    glm::dvec3 v = o - e.centre;
+    if (e.kind == Kind::ApexCap) v -= e.length * e.axis;
+    glm::dvec3 dv = d;
+    const double vz = glm::dot(v, e.axis), dz = glm::dot(d, e.axis);
+    if (e.kind == Kind::Cylinder) {  // the infinite cylinder first: distances across the axis
+        v -= vz * e.axis;
+        dv -= dz * e.axis;
+    }
+    const double a = glm::dot(dv, dv), b = glm::dot(v, dv), c = glm::dot(v, v) - e.rad2;
+    if (e.kind == Kind::Cylinder && a < kEpsilon) {  // along the axis
+        if (c >= 0) return false;
+        t0 = -std::numeric_limits<double>::infinity();
+        t1 = std::numeric_limits<double>::infinity();
+    } else {
+        if (!(a > 0)) return false;
+        const double disc = b * b - a * c;
+        if (disc < kEpsilon) return false;
+        const double root = std::sqrt(disc);
+        t0 = (-b - root) / a;
+        t1 = (-b + root) / a;
+    }
+    if (e.kind == Kind::Sphere) return true;
+    // The part of space the element owns along the axis: z < 0 (base cap), 0..len
+    // (cylinder), z > 0 past the apex (apex cap); z(t) = vz + t dz.
+    double lo = -std::numeric_limits<double>::infinity(), hi = -lo;
+    if (e.kind == Kind::BaseCap) hi = 0;
+    else if (e.kind == Kind::ApexCap) lo = 0;
+    else { lo = 0; hi = e.length; }
+    if (std::fabs(dz) < kEpsilon) {
+        if (vz < lo || vz > hi) return false;
+    } else {
+        double za = (lo - vz) / dz, zb = (hi - vz) / dz;
+        if (za > zb) std::swap(za, zb);
+        t0 = std::max(t0, za);
+        t1 = std::min(t1, zb);
+    }
+    return t0 < t1;
+}
+
+// The element's density along o + t d as a quartic in t, lowest power first.
+void element_quartic(const BlobElement& e, const glm::dvec3& o, const glm::dvec3& d,
+                     double* q) {
+    glm::dvec3 v = o - e.centre, dv = d;
+    if (e.kind == Kind::ApexCap) v -= e.length * e.axis;
+    if (e.kind == Kind::Cylinder) {
+        v -= glm::dot(v, e.axis) * e.axis;
+        dv -= glm::dot(dv, e.axis) * e.axis;
+    }
+    const double t0 = glm::dot(v, v), t1 = glm::dot(v, dv), t2 = glm::dot(dv, dv);
+    const double c0 = e.c[0], c1 = e.c[1], c2 = e.c[2];
+    q[4] = c0 * t2 * t2;
+    q[3] = 4 * c0 * t1 * t2;
+    q[2] = 2 * c0 * (2 * t1 * t1 + t0 * t2) + c1 * t2;
+    q[1] = 2 * t1 * (2 * c0 * t0 + c1);
+    q[0] = t0 * (c0 * t0 + c1) + c2;
+}
+
+// True when the quartic (lowest power first) may vanish for t in [l, l + w]: the Bernstein
+// coefficients of its restriction to the piece do not all have one sign.
+bool may_have_root(const double* a, double l, double w) {
+    // q(s) = a(l + w s), lowest power first.
+    static constexpr double kBinomial[5][5] = {
+        {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+    double q[5];
+    double wk = 1;
+    for (int k = 0; k <= 4; ++k) {
+        double sum = 0, lp = 1;
+        for (int j = k; j <= 4; ++j) {
+            sum += kBinomial[j][k] * a[j] * lp;
+            lp *= l;
+        }
+        q[k] = sum * wk;
+        wk *= w;
+    }
+    bool positive = false, negative = false;
+    for (int i = 0; i <= 4; ++i) {
+        double b = 0;
+        for (int k = 0; k <= i; ++k) b += kBinomial[i][k] / kBinomial[4][k] * q[k];
+        positive |= b >= 0;
+        negative |= b <= 0;
+    }
+    return positive && negative;
+}
+
+// One Newton step on the quartic (lowest power first) from root x, kept when it stays in the
+// piece and brings the value nearer 0. The closed-form quartic is good to about 1e-7 of the
+// events' span; the step takes that to rounding without moving any root a pixel would see.
+double polished(const double* a, double x, double l, double w) {
+    auto value = [&](double t, double& slope) {
+        double v = a[4], dv = 0;
+        for (int k = 3; k >= 0; --k) {
+            dv = dv * t + v;
+            v = v * t + a[k];
+        }
+        slope = dv;
+        return v;
+    };
+    double slope;
+    const double v = value(x, slope);
+    if (!(slope != 0)) return x;
+    const double y = x - v / slope;
+    if (!(y >= l && y <= l + w)) return x;
+    double unused;
+    return std::fabs(value(y, unused)) < std::fabs(v) ? y : x;
+}
+
+struct Event {
+    double t;
+    int element;
+    bool enter;
+};
+
+// The elements whose boxes the ray o + t d (t in [0, tmax]) crosses.
+template <class F>
+void for_each_candidate(const BlobShape& s, const glm::dvec3& o, const glm::dvec3& d,
+                        double tmax, const F& f) {
+    if (s.nodes.empty()) return;
+    const SlabRay slab(o, d);
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const BlobShape::Node& n = s.nodes[stack[--top]];
+        if (!slab.hits(n.box, -std::numeric_limits<double>::infinity(), tmax)) continue;
+        if (n.right < 0) {
+            for (int i = 0; i < n.count; ++i) f(s.order[n.first + i]);
+            continue;
+        }
+        const int self = int(&n - s.nodes.data());
+        stack[top++] = n.right;
+        stack[top++] = self + 1;
+    }
+}
+
+Aabb element_box(const BlobShape& s, const BlobElement& e) {
+    const double r = std::sqrt(e.rad2);
+    Aabb box;
+    const glm::dvec3 ends[2] = {e.centre, e.centre + e.length * e.axis};
+    const int first = e.kind == Kind::ApexCap ? 1 : 0;
+    const int last = e.kind == Kind::Cylinder ? 1 : first;
+    for (int i = first; i <= last; ++i) {
+        box.expand(ends[i] - glm::dvec3(r));
+        box.expand(ends[i] + glm::dvec3(r));
+    }
+    return e.transform < 0 ? box : transformed(box, s.to_component[e.transform]);
+}
+
+void build_tree(BlobShape& s) {
+    std::vector<Aabb> boxes;
+    for (const BlobElement& e : s.elements) boxes.push_back(element_box(s, e));
+    s.order.resize(s.elements.size());
+    for (size_t i = 0; i < s.order.size(); ++i) s.order[i] = int(i);
+    // Median splits on the widest axis of the centres; depth stays below log2(n) + 1.
+    auto build = [&](auto& self, int first, int count) -> void {
+        const int index = int(s.nodes.size());
+        s.nodes.push_back({});
+        Aabb box, centres;
+        for (int i = first; i < first + count; ++i) {
+            box.expand(boxes[s.order[i]]);
+            centres.expand(boxes[s.order[i]].centre());
+        }
+        s.nodes[index].box = box;
+        if (count <= kLeafSize) {
+            s.nodes[index].first = first;
+            s.nodes[index].count = count;
+            return;
+        }
+        const glm::dvec3 ext = centres.hi - centres.lo;
+        const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
+        const int half = count / 2;
+        std::nth_element(s.order.begin() + first, s.order.begin() + first + half,
+                         s.order.begin() + first + count, [&](int a, int b) {
+                             return boxes[a].centre()[axis] < boxes[b].centre()[axis];
+                         });
+        self(self, first, half);
+        s.nodes[index].right = int(s.nodes.size());
+        self(self, first + half, count - half);
+    };
+    if (!s.elements.empty()) build(build, 0, int(s.elements.size()));
+    s.box = s.nodes.empty() ? Aabb{} : s.nodes[0].box;
+}
+
+}  // namespace
+
+BlobShape make_blob(const scene::Blob& b) {
+    BlobShape s;
+    s.threshold = b.threshold;
+    s.sturm = b.sturm;
+    s.valid = std::isfinite(b.threshold);
+    for (size_t i = 0; i < b.components.size(); ++i) {
+        const scene::Blob::Component& c = b.components[i];
+        s.textures.push_back(c.texture.empty() ? nullptr : &c.texture);
+        s.textured |= !c.texture.empty();
+        if (c.radius == 0) continue;  // no density anywhere (POV-Ray draws nothing of it)
+        if (!(c.radius > 0) || !std::isfinite(c.radius) || !std::isfinite(c.strength) ||
+            !std::isfinite(glm::dot(c.a, c.a) + glm::dot(c.b, c.b))) {
+            s.valid = false;
+            continue;
+        }
+        BlobElement e;
+        e.component = int(i);
+        if (c.transform) {
+            e.transform = int(s.to_component.size());
+            s.to_component.push_back(*c.transform);
+        }
+        e.rad2 = c.radius * c.radius;
+        e.c[0] = c.strength / (e.rad2 * e.rad2);
+        e.c[1] = -2 * c.strength / e.rad2;
+        e.c[2] = c.strength;
+        e.centre = c.a;
+        if (!c.cylinder) {
+            s.elements.push_back(e);
+            continue;
+        }
+        e.length = glm::length(c.b - c.a);
+        if (!(e.length > 0)) {
+            s.valid = false;
+            continue;
+        }
+        e.axis = (c.b - c.a) / e.length;
+        for (Kind k : {Kind::Cylinder, Kind::BaseCap, Kind::ApexCap}) {
+            e.kind = k;
+            s.elements.push_back(e);
+        }
+    }
+    build_tree(s);
+    return s;
+}
+
+double blob_element_density(const BlobShape& s, const BlobElement& e, const glm::dvec3& p) {
+    glm::dvec3 v;
+    if (!element_offset(e, to_element(s, e, p), v)) return 0;
+    const double d2 = glm::dot(v, v);
+    if (d2 >= e.rad2) return 0;
+    return (e.c[0] * d2 + e.c[1]) * d2 + e.c[2];
+}
+
+double blob_density(const BlobShape& s, const glm::dvec3& p) {
+    double sum = 0;
+    for_each_candidate(s, p, glm::dvec3(0), 0, [&](int i) {
+        sum += blob_element_density(s, s.elements[i], p);
+    });
+    return sum;
+}
+
+glm::dvec3 blob_gradient(const BlobShape& s, const glm::dvec3& p) {
+    glm::dvec3 g(0);
+    for_each_candidate(s, p, glm::dvec3(0), 0, [&](int i) {
+        const BlobElement& e = s.elements[i];
+        glm::dvec3 v;
+        if (!element_offset(e, to_element(s, e, p), v)) return;
+        const double d2 = glm::dot(v, v);
+        if (d2 >= e.rad2) return;
+        glm::dvec3 local = (4 * e.c[0] * d2 + 2 * e.c[1]) * v;
+        if (e.transform >= 0) local = s.to_component[e.transform].normal(local);
+        g += local;
+    });
+    return g;
+}
+
+bool inside(const BlobShape& s, const glm::dvec3& p) {
+    return s.valid && blob_density(s, p) > s.threshold - kInsideTolerance;
+}
+
+bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    if (!s.valid) return false;
+    const double len = glm::length(r.d);
+    if (!(len > 0) || !std::isfinite(len)) return false;
+    const glm::dvec3 d = r.d / len;
+    const glm::dvec3& o = r.o;
+
+    // The elements' intervals along the unit ray, entries and exits sorted.
+    thread_local std::vector<Event> events;
+    events.clear();
+    const double mindist = kDepthBlob;
+    for_each_candidate(s, o, d, tmax * len, [&](int i) {
+        const BlobElement& e = s.elements[i];
+        double t0, t1;
+        if (!element_interval(e, to_element(s, e, o), to_element_dir(s, e, d), t0, t1)) return;
+        if (t1 < mindist) return;
+        t0 = std::max(t0, mindist);
+        events.push_back({t0, i, true});
+        events.push_back({t1, i, false});
+    });
+    if (events.empty()) return false;
+    std::sort(events.begin(), events.end(),
+              [](const Event& a, const Event& b) { return a.t < b.t; });
+
+    // Start at the first entry and scale so the events span [0, 1].
+    const double start = events.front().t >= kSmallTolerance ? events.front().t : 0;
+    const double scale = events.back().t - start;
+    if (!(scale > 0) || !std::isfinite(scale)) return false;
+    const glm::dvec3 so = o + start * d, sd = d * scale;
+
+    double sum[5] = {-s.threshold, 0, 0, 0, 0};  // lowest power first
+    double q[5];
+    for (size_t k = 0; k + 1 < events.size(); ++k) {
+        const Event& ev = events[k];
+        const BlobElement& e = s.elements[ev.element];
+        element_quartic(e, to_element(s, e, so), to_element_dir(s, e, sd), q);
+        const double sign = ev.enter ? 1 : -1;
+        for (int i = 0; i < 5; ++i) sum[i] += sign * q[i];
+        const double l = (ev.t - start) / scale, w = (events[k + 1].t - ev.t) / scale;
+        if (!(w > 0)) continue;
+        // The world depths of the piece, to skip what lies before tmin.
+        if ((l + w) * scale + start <= tmin * len) continue;
+        if ((l * scale + start) / len >= tmax) break;
+        if (!may_have_root(sum, l, w)) continue;
+        const double high_first[5] = {sum[4], sum[3], sum[2], sum[1], sum[0]};
+        double roots[4];
+        const int n = solve_pov_polynomial(4, high_first, roots, s.sturm, kRootTolerance);
+        double best = tmax;
+        bool found = false;
+        for (int i = 0; i < n; ++i) {
+            if (!(roots[i] >= l && roots[i] <= l + w)) continue;
+            const double depth = (polished(sum, roots[i], l, w) * scale + start) / len;
+            if (depth > tmin && depth > kDepthBlob && depth < kMaxDistance && depth < best) {
+                best = depth;
+                found = true;
+            }
+        }
+        if (!found) continue;
+        h.t = best;
+        h.normal = -blob_gradient(s, r.at(best));
+        if (!(glm::dot(h.normal, h.normal) > 0) || !std::isfinite(glm::dot(h.normal, h.normal)))
+            h.normal = -d;  // a point where the gradient vanishes: face the ray
+        return true;
+    }
+    return false;
+}
+
+}  // namespace lumen::render
