@@ -3,6 +3,7 @@
 // ray's discriminant reaches 1e-10, hits nearer than 1e-2 are ignored, the solver drops a
 // root at 0 below 1e-11, and a point is inside where the density exceeds threshold - 1e-6.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -20,7 +21,8 @@ constexpr double kSmallTolerance = 1e-3;  // the ray start moves to the first en
 constexpr double kRootTolerance = 1e-11;
 constexpr double kInsideTolerance = 1e-6;
 constexpr double kMaxDistance = 1e7;
-constexpr int kLeafSize = 4;
+constexpr int kLeafSize = 2;
+constexpr double kHuge = std::numeric_limits<double>::infinity();
 
 using Kind = BlobElement::Kind;
 
@@ -164,30 +166,27 @@ double polished(const double* a, double x, double l, double w) {
 
 struct Event {
     double t;
-    int element;
+    int slot;  // the interval's index in the ray's scratch lists
     bool enter;
 };
 
-// The elements whose boxes the ray o + t d (t in [0, tmax]) crosses.
+// Per-thread scratch lists of one ray's intervals, kept between rays to avoid allocation.
+struct Sweep {
+    std::vector<Event> events;
+    std::vector<int> element;          // per interval
+    std::vector<std::array<double, 5>> quartic;  // per interval, made on entry
+    std::vector<int> active, position; // the intervals the sweep is in, and where in `active`
+};
+
+// The gradient of the density at p from the elements of the active intervals.
+glm::dvec3 active_gradient(const BlobShape& s, const Sweep& sw, const glm::dvec3& p);
+
+// The elements whose boxes the ray o + t d crosses for t in [tmin, tmax] (d = 0 with
+// tmin = -inf and tmax = 0: the boxes holding the point o).
 template <class F>
 void for_each_candidate(const BlobShape& s, const glm::dvec3& o, const glm::dvec3& d,
-                        double tmax, const F& f) {
-    if (s.nodes.empty()) return;
-    const SlabRay slab(o, d);
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const BlobShape::Node& n = s.nodes[stack[--top]];
-        if (!slab.hits(n.box, -std::numeric_limits<double>::infinity(), tmax)) continue;
-        if (n.right < 0) {
-            for (int i = 0; i < n.count; ++i) f(s.order[n.first + i]);
-            continue;
-        }
-        const int self = int(&n - s.nodes.data());
-        stack[top++] = n.right;
-        stack[top++] = self + 1;
-    }
+                        double tmin, double tmax, const F& f) {
+    s.tree.traverse(SlabRay(o, d), tmin, tmax, [&](uint32_t i) { f(int(s.tree.order()[i])); });
 }
 
 Aabb element_box(const BlobShape& s, const BlobElement& e) {
@@ -206,36 +205,8 @@ Aabb element_box(const BlobShape& s, const BlobElement& e) {
 void build_tree(BlobShape& s) {
     std::vector<Aabb> boxes;
     for (const BlobElement& e : s.elements) boxes.push_back(element_box(s, e));
-    s.order.resize(s.elements.size());
-    for (size_t i = 0; i < s.order.size(); ++i) s.order[i] = int(i);
-    // Median splits on the widest axis of the centres; depth stays below log2(n) + 1.
-    auto build = [&](auto& self, int first, int count) -> void {
-        const int index = int(s.nodes.size());
-        s.nodes.push_back({});
-        Aabb box, centres;
-        for (int i = first; i < first + count; ++i) {
-            box.expand(boxes[s.order[i]]);
-            centres.expand(boxes[s.order[i]].centre());
-        }
-        s.nodes[index].box = box;
-        if (count <= kLeafSize) {
-            s.nodes[index].first = first;
-            s.nodes[index].count = count;
-            return;
-        }
-        const glm::dvec3 ext = centres.hi - centres.lo;
-        const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
-        const int half = count / 2;
-        std::nth_element(s.order.begin() + first, s.order.begin() + first + half,
-                         s.order.begin() + first + count, [&](int a, int b) {
-                             return boxes[a].centre()[axis] < boxes[b].centre()[axis];
-                         });
-        self(self, first, half);
-        s.nodes[index].right = int(s.nodes.size());
-        self(self, first + half, count - half);
-    };
-    if (!s.elements.empty()) build(build, 0, int(s.elements.size()));
-    s.box = s.nodes.empty() ? Aabb{} : s.nodes[0].box;
+    s.tree.build(boxes, kLeafSize);
+    s.box = s.tree.bounds();
 }
 
 }  // namespace
@@ -295,24 +266,35 @@ double blob_element_density(const BlobShape& s, const BlobElement& e, const glm:
 
 double blob_density(const BlobShape& s, const glm::dvec3& p) {
     double sum = 0;
-    for_each_candidate(s, p, glm::dvec3(0), 0, [&](int i) {
+    for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0, [&](int i) {
         sum += blob_element_density(s, s.elements[i], p);
     });
     return sum;
 }
 
+namespace {
+
+glm::dvec3 element_gradient(const BlobShape& s, const BlobElement& e, const glm::dvec3& p) {
+    glm::dvec3 v;
+    if (!element_offset(e, to_element(s, e, p), v)) return glm::dvec3(0);
+    const double d2 = glm::dot(v, v);
+    if (d2 >= e.rad2) return glm::dvec3(0);
+    const glm::dvec3 local = (4 * e.c[0] * d2 + 2 * e.c[1]) * v;
+    return e.transform < 0 ? local : s.to_component[e.transform].normal(local);
+}
+
+glm::dvec3 active_gradient(const BlobShape& s, const Sweep& sw, const glm::dvec3& p) {
+    glm::dvec3 g(0);
+    for (int slot : sw.active) g += element_gradient(s, s.elements[sw.element[slot]], p);
+    return g;
+}
+
+}  // namespace
+
 glm::dvec3 blob_gradient(const BlobShape& s, const glm::dvec3& p) {
     glm::dvec3 g(0);
-    for_each_candidate(s, p, glm::dvec3(0), 0, [&](int i) {
-        const BlobElement& e = s.elements[i];
-        glm::dvec3 v;
-        if (!element_offset(e, to_element(s, e, p), v)) return;
-        const double d2 = glm::dot(v, v);
-        if (d2 >= e.rad2) return;
-        glm::dvec3 local = (4 * e.c[0] * d2 + 2 * e.c[1]) * v;
-        if (e.transform >= 0) local = s.to_component[e.transform].normal(local);
-        g += local;
-    });
+    for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0,
+                       [&](int i) { g += element_gradient(s, s.elements[i], p); });
     return g;
 }
 
@@ -328,21 +310,30 @@ bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, 
     const glm::dvec3& o = r.o;
 
     // The elements' intervals along the unit ray, entries and exits sorted.
-    thread_local std::vector<Event> events;
+    thread_local Sweep sw;
+    std::vector<Event>& events = sw.events;
     events.clear();
+    sw.element.clear();
+    sw.active.clear();
     const double mindist = kDepthBlob;
-    for_each_candidate(s, o, d, tmax * len, [&](int i) {
+    for_each_candidate(s, o, d, mindist, tmax * len, [&](int i) {
         const BlobElement& e = s.elements[i];
         double t0, t1;
         if (!element_interval(e, to_element(s, e, o), to_element_dir(s, e, d), t0, t1)) return;
         if (t1 < mindist) return;
         t0 = std::max(t0, mindist);
-        events.push_back({t0, i, true});
-        events.push_back({t1, i, false});
+        const int slot = int(sw.element.size());
+        sw.element.push_back(i);
+        events.push_back({t0, slot, true});
+        events.push_back({t1, slot, false});
     });
     if (events.empty()) return false;
     std::sort(events.begin(), events.end(),
               [](const Event& a, const Event& b) { return a.t < b.t; });
+    if (sw.quartic.size() < sw.element.size()) {
+        sw.quartic.resize(sw.element.size());
+        sw.position.resize(sw.element.size());
+    }
 
     // Start at the first entry and scale so the events span [0, 1].
     const double start = events.front().t >= kSmallTolerance ? events.front().t : 0;
@@ -350,14 +341,25 @@ bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, 
     if (!(scale > 0) || !std::isfinite(scale)) return false;
     const glm::dvec3 so = o + start * d, sd = d * scale;
 
-    double sum[5] = {-s.threshold, 0, 0, 0, 0};  // lowest power first
-    double q[5];
+    // The running sum of the active elements' quartics, lowest power first: each added on
+    // entry and subtracted on exit, as POV-Ray sums them.
+    double sum[5] = {-s.threshold, 0, 0, 0, 0};
     for (size_t k = 0; k + 1 < events.size(); ++k) {
         const Event& ev = events[k];
-        const BlobElement& e = s.elements[ev.element];
-        element_quartic(e, to_element(s, e, so), to_element_dir(s, e, sd), q);
-        const double sign = ev.enter ? 1 : -1;
-        for (int i = 0; i < 5; ++i) sum[i] += sign * q[i];
+        std::array<double, 5>& q = sw.quartic[ev.slot];
+        if (ev.enter) {
+            const BlobElement& e = s.elements[sw.element[ev.slot]];
+            element_quartic(e, to_element(s, e, so), to_element_dir(s, e, sd), q.data());
+            for (int i = 0; i < 5; ++i) sum[i] += q[i];
+            sw.position[ev.slot] = int(sw.active.size());
+            sw.active.push_back(ev.slot);
+        } else {
+            for (int i = 0; i < 5; ++i) sum[i] -= q[i];
+            const int at = sw.position[ev.slot];
+            sw.active[at] = sw.active.back();
+            sw.position[sw.active[at]] = at;
+            sw.active.pop_back();
+        }
         const double l = (ev.t - start) / scale, w = (events[k + 1].t - ev.t) / scale;
         if (!(w > 0)) continue;
         // The world depths of the piece, to skip what lies before tmin.
@@ -379,7 +381,7 @@ bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, 
         }
         if (!found) continue;
         h.t = best;
-        h.normal = -blob_gradient(s, r.at(best));
+        h.normal = -active_gradient(s, sw, r.at(best));
         if (!(glm::dot(h.normal, h.normal) > 0) || !std::isfinite(glm::dot(h.normal, h.normal)))
             h.normal = -d;  // a point where the gradient vanishes: face the ray
         return true;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/bvh.hpp"
 #include "render/shapes/shape.hpp"
 
 namespace lumen::render {
@@ -30,14 +31,7 @@ struct BlobShape {
     bool valid = false;
     std::vector<BlobElement> elements;
     std::vector<scene::Transform> to_component;  // the components' transforms (m: to blob space)
-    // A bounding-box tree over the elements (leaves hold element ranges of `order`).
-    struct Node {
-        Aabb box;
-        int first = 0, count = 0;  // leaf: elements order[first, first + count)
-        int right = -1;            // inner: left child is the next node, right here
-    };
-    std::vector<Node> nodes;
-    std::vector<int> order;
+    Bvh tree;  // over the elements' boxes (the hierarchy POV-Ray builds for its own speed)
     Aabb box;
     // The components' own textures (null: the blob's), when any component has one.
     std::vector<const scene::LayeredTexture*> textures;
