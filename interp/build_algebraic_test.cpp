@@ -65,5 +65,17 @@ TEST_F(BuildAlgebraic, QuadricAndSuperellipsoid) {
     EXPECT_DOUBLE_EQ(s.n, 0.5);
 }
 
+TEST_F(BuildAlgebraic, OvusRadiiAsPovRayTakesThem) {
+    auto o = shape_of<scene::Ovus>("ovus { 1, 0.6 }");
+    EXPECT_DOUBLE_EQ(o.bottom, 1);
+    EXPECT_DOUBLE_EQ(o.top, 0.6);
+    EXPECT_EQ(error_of("ovus { -1, 0.5 }"), "t.pov:1:8: error: both ovus radii must be positive");
+    // A top radius of twice the bottom one or more is the sphere it would be (POV warns).
+    auto s = shape_of<scene::Sphere>("ovus { 0.5, 1 }");
+    expect_vec(s.center, {0, 0.5, 0});
+    EXPECT_DOUBLE_EQ(s.radius, 1);
+    EXPECT_EQ(warnings.size(), 1u);
+}
+
 }  // namespace
 }  // namespace lumen::interp::testing

@@ -259,6 +259,23 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemC
     return share(object_of(cur, scene::Superellipsoid{en[0], en[1]}));
 }
 
+// ovus { bottom, top }: POV-Ray refuses negative radii, and makes a top radius of twice the
+// bottom one or more the sphere the ovus would be (with its warning).
+scene::ObjectPtr read_primitive(std::type_identity<scene::Ovus>, ItemCursor& cur) {
+    scene::Ovus o;
+    for (double* r : {&o.bottom, &o.top}) {
+        const SourceLoc loc = next_loc(cur);
+        *r = cur.expect_float("");
+        if (!(*r >= 0) || !std::isfinite(*r)) cur.fail(loc, "both ovus radii must be positive");
+    }
+    if (o.top >= 2 * o.bottom) {
+        cur.warn(cur.block_loc(), "an ovus's top radius of twice its bottom radius or more makes "
+                                  "it a sphere: rendered as one");
+        return share(object_of(cur, scene::Sphere{{0, o.bottom, 0}, o.top}));
+    }
+    return share(object_of(cur, o));
+}
+
 scene::ObjectPtr read_primitive(std::type_identity<scene::Blob>, ItemCursor& cur) {
     return build_blob(cur);
 }

@@ -368,6 +368,11 @@ struct ShapeDumper {
         if (b.sturm) o.put("sturm", Json::boolean(true));
         if (!b.hierarchy) o.put("hierarchy", Json::boolean(false));
     }
+    void operator()(const scene::Ovus& v) const {
+        o.put("type", Json::str("ovus"));
+        o.put("bottom", Json::num(v.bottom));
+        o.put("top", Json::num(v.top));
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

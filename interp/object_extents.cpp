@@ -205,6 +205,13 @@ struct ShapeBoxes {
     // into the blob's space as a sphere again: its box through the element's transform, then
     // the largest half-width of that box as the radius (measured: a scaled, rotated sphere
     // gets a cube). A cylinder's space turns z onto the axis by the smallest rotation.
+    // POV-Ray's box: the widest of the spheres and the lemon's equator, from the bottom of
+    // the bottom sphere to the top of the top one (measured).
+    ShapeBox operator()(const scene::Ovus& v) const {
+        const scene::Ovus::Lemon l = v.lemon();
+        const double r = std::max({v.bottom, v.top, l.radius - l.offset});
+        return {{{-r, -v.bottom, -r}, {r, v.bottom + v.top, r}}};
+    }
     ShapeBox operator()(const scene::Blob& b) const {
         Extents out = empty_box();
         auto add = [&](const glm::dmat4& to_blob, bool exact, const glm::dvec3& centre, double r) {

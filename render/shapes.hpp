@@ -7,6 +7,7 @@
 #include "render/shapes/disc.hpp"
 #include "render/shapes/lathe.hpp"
 #include "render/shapes/mesh.hpp"
+#include "render/shapes/ovus.hpp"
 #include "render/shapes/plane.hpp"
 #include "render/shapes/poly.hpp"
 #include "render/shapes/polygon.hpp"

@@ -31,7 +31,8 @@
     X(Poly, "poly", "cubic", "quartic", "polynomial") \
     X(Quadric, "quadric")                      \
     X(Superellipsoid, "superellipsoid")        \
-    X(Blob, "blob")
+    X(Blob, "blob")                            \
+    X(Ovus, "ovus")
 
 namespace lumen::scene {
 
@@ -58,7 +59,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
     "height_field", "isosurface", "julia_fractal", "lemon",
-    "light_group", "ovus", "parametric", "sphere_sweep"};
+    "light_group", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -2,6 +2,7 @@
 // coordinates as written.
 #pragma once
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -196,6 +197,31 @@ struct Blob {
     bool sturm = false, hierarchy = true;
     LUMEN_FIELDS(f("threshold", s.threshold), f("components", s.components),
                  f("sturm", s.sturm), f("hierarchy", s.hierarchy))
+};
+
+// ovus { bottom_radius, top_radius }: a sphere of the bottom radius at the origin, one of the
+// top radius centred on its top (0, bottom_radius, 0), joined by the lemon (the inner part of
+// a spindle torus) tangent to both whose generating circle has twice the larger radius.
+struct Ovus {
+    double bottom = 1, top = 0.5;
+    LUMEN_FIELDS(f("bottom", s.bottom), f("top", s.top))
+
+    // The lemon: its generating circle (radius `radius`, centre `offset` across the y axis
+    // from it at height `height`) and the heights where it meets the spheres.
+    struct Lemon {
+        double radius, height, offset, low, high;
+    };
+    Lemon lemon() const {
+        const double big = 2 * (bottom > top ? bottom : top);
+        const double a = big - bottom, b = big - top;
+        Lemon l{big, 0, 0, 0, 0};
+        l.height = bottom > 0 ? (a * a - b * b + bottom * bottom) / (2 * bottom) : 0;
+        const double e2 = a * a - l.height * l.height;
+        l.offset = e2 > 0 ? std::sqrt(e2) : 0;
+        l.low = a > 0 ? -l.height * bottom / a : 0;
+        l.high = b > 0 ? l.height + big * (bottom - l.height) / b : 0;
+        return l;
+    }
 };
 
 #undef LUMEN_FIELDS

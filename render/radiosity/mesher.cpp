@@ -273,6 +273,7 @@ struct ShapeMesher {
     NotMeshed operator()(const scene::Quadric&) const { return {}; }
     NotMeshed operator()(const scene::Superellipsoid&) const { return {}; }
     NotMeshed operator()(const scene::Blob&) const { return {}; }
+    NotMeshed operator()(const scene::Ovus&) const { return {}; }
     // Unions are meshed through by the caller; other CSG only occludes.
     NotMeshed operator()(const scene::Csg&) const { return {}; }
     NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }

@@ -118,6 +118,7 @@ scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
     return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
 }
 scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
+scene::Ovus sample_shape(std::type_identity<scene::Ovus>) { return {1, 0.6}; }
 // Two spheres joined by a cylinder, a negative sphere biting one, one component scaled.
 scene::Blob sample_shape(std::type_identity<scene::Blob>) {
     scene::Blob b;
