@@ -200,6 +200,15 @@ struct ShapeBoxes {
     ShapeBox operator()(const scene::Superellipsoid&) const {
         return {{glm::dvec3(-1.0001), glm::dvec3(1.0001)}};
     }
+    // The box POV-Ray searches: x and z over the grid, y from the water level (or the lowest
+    // height) - 0.001 to the highest + 0.001, in the field's units (heights / 65536).
+    ShapeBox operator()(const scene::HeightField& h) const {
+        if (!h.heights || h.heights->empty()) return {{glm::dvec3(0), glm::dvec3(0)}};
+        const auto [lo, hi] = std::minmax_element(h.heights->begin(), h.heights->end());
+        // Water above every height leaves the two reversed: POV-Ray reports them swapped.
+        const double y0 = std::max(double(*lo), 65536.0 * h.water_level) - 0.001, y1 = *hi + 0.001;
+        return {{{0, std::min(y0, y1) / 65536.0, 0}, {1, std::max(y0, y1) / 65536.0, 1}}};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

@@ -118,6 +118,17 @@ scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
     return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
 }
 scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
+// A 5 x 4 grid of uneven heights (flat normals: smooth ones are not perpendicular to the
+// triangles, which the normal test assumes).
+scene::HeightField sample_shape(std::type_identity<scene::HeightField>) {
+    scene::HeightField h;
+    h.columns = 5;
+    h.rows = 4;
+    h.heights = std::make_shared<const std::vector<uint16_t>>(std::vector<uint16_t>{
+        9000, 20000, 30000, 12000, 5000, 15000, 40000, 52000, 30000, 10000,
+        8000, 36000, 60000, 41000, 20000, 3000, 10000, 25000, 18000, 7000});
+    return h;
+}
 
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
