@@ -228,7 +228,11 @@ bool intersect(const HeightFieldShape& s, const LocalRay& ray, double tmin, doub
 }
 
 // Outside the grid's x-z range or above the box: outside; below the water level: inside;
-// else inside when below the triangle over the point (no floor: the solid reaches down).
+// else inside when below the triangle over the point. There is no floor: the solid reaches
+// down without end (measured: a sphere's far side below the lowest height shows through
+// the difference of a field and the sphere). A cylinder clipped by a field does end in
+// POV-Ray (objects/csg/hfclip.pov), but only because POV-Ray bounds the clipped object by
+// the field's box, which lumen does not.
 bool inside(const HeightFieldShape& s, const glm::dvec3& point) {
     if (!s.valid) return false;
     const glm::dvec3 p = s.grid_to_space.inv_point(point);
@@ -243,17 +247,21 @@ bool inside(const HeightFieldShape& s, const glm::dvec3& point) {
     return p.y < surface;
 }
 
-// The searched box.
-Aabb bounds(const HeightFieldShape& s) {
-    if (!s.valid) return {};
+namespace {
+
+Aabb grid_box(const HeightFieldShape& s, double y0, double y1) {
+    if (!s.valid || y0 > y1) return {};
     Aabb out;
     for (int i = 0; i < 8; ++i)
-        out.expand(s.grid_to_space.point({(i & 1) ? s.columns - 1.0 : 0.0, (i & 2) ? s.top : s.floor,
+        out.expand(s.grid_to_space.point({(i & 1) ? s.columns - 1.0 : 0.0, (i & 2) ? y1 : y0,
                                           (i & 4) ? s.rows - 1.0 : 0.0}));
     return out;
 }
 
-// The box and the column below it, which is inside too.
+}  // namespace
+
+Aabb bounds(const HeightFieldShape& s) { return grid_box(s, s.floor, s.top); }
+// The box and the column below it.
 Aabb solid_bounds(const HeightFieldShape& s) {
     Aabb out = bounds(s);
     if (out.empty()) return out;

@@ -66,9 +66,11 @@ TEST(HeightField, NothingBelowTheWaterLevelIsDrawn) {
     auto above = hit(*wet, {0.9, 5, 0.5}, {0, -1, 0});
     ASSERT_TRUE(above);
     EXPECT_NEAR(5 - above->t, 0.9 * 4 * 16383 / 65536.0, 1e-9);
-    // Below the water is inside, as is what lies under the surface; above and beside are not.
+    // Below the water is inside, as is all that lies under the surface; above and beside are
+    // not.
     EXPECT_TRUE(inside(*wet, {0.2, 0.3, 0.5}));
     EXPECT_FALSE(inside(*dry, {0.2, 0.3, 0.5}));
+    EXPECT_TRUE(inside(*dry, {0.9, -5, 0.5}));
     EXPECT_TRUE(inside(*dry, {0.9, 0.5, 0.5}));
     EXPECT_FALSE(inside(*dry, {0.9, 0.95, 0.5}));
     EXPECT_FALSE(inside(*dry, {1.1, 0.1, 0.5}));
