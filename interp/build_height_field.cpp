@@ -1,7 +1,10 @@
 // height_field { [TYPE] "file" [gamma G | gamma srgb] [premultiplied B] [water_level w]
 // [smooth] [hierarchy B] OBJECT_MODIFIERS }: the image read now (image/image_file.hpp) and
-// turned into POV-Ray's 16-bit heights. The `function W, H { }` form is not supported.
+// turned into POV-Ray's 16-bit heights; or `function W, H { expr }`, an image made by
+// evaluating a float expression (pigment functions are not supported).
 #include <cmath>
+
+#include "parser/ast.hpp"
 
 #include "image/image_file.hpp"
 #include "image/pov_storage.hpp"
@@ -67,13 +70,75 @@ image::Decode read_file_modifiers(ItemCursor& cur) {
     }
 }
 
+// The field of a stored image, with its options and the object modifiers that follow.
+scene::ObjectPtr field_object(ItemCursor& cur, SourceLoc block, const image::PovImage& img) {
+    scene::HeightField hf;
+    hf.columns = img.width;
+    hf.rows = img.height;
+    auto heights = std::make_shared<std::vector<uint16_t>>(grid_of(img));
+    hf.heights_hash = hash_heights(*heights);
+    hf.heights = std::move(heights);
+    for (;;) {
+        if (cur.accept_keyword("water_level")) {
+            hf.water_level = cur.expect_float("water_level");
+            if (cur.ctx().language_version < 2.0) hf.water_level /= 256;  // POV-Ray 1's 0..256
+        } else if (cur.accept_keyword("smooth")) {
+            hf.smooth = true;
+        } else if (cur.accept_keyword("hierarchy")) {
+            hf.hierarchy = cur.optional_bool();
+        } else {
+            break;
+        }
+    }
+    scene::Object obj;
+    obj.loc = block;
+    obj.shape = std::move(hf);
+    read_object_modifiers(cur, obj, [](const Item&) { return false; }, {});
+    return std::make_shared<scene::Object>(std::move(obj));
+}
+
+// `function W, H { expr }`: a W x H image whose pixel (column j, row i from the top) is
+// expr at (j / (W - 1), i / (H - 1), 0), stored as 16-bit grey trunc(v * 65535) with v kept
+// in [0, 1]. Null when the body is a pigment (or other block), which lumen cannot evaluate.
+std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionValue& fn) {
+    const ast::Node& node = *fn.node;
+    if (!node.flag || node.children.size() != 3 || !cur.ctx().eval_at) return nullptr;
+    const ast::Node& body = *node.children[2];
+    if (body.kind == ast::Kind::Block) return nullptr;
+    auto size = [&](const ast::Node& e) {
+        const double v = cur.ctx().eval_at(e, 0, 0, 0);
+        if (!(v + 0.5 >= 2 && v + 0.5 < image::kMaxImageSide + 1))
+            cur.fail(e.loc, "a function image needs 2 to " + std::to_string(image::kMaxImageSide) +
+                                " pixels a side");
+        return int(v + 0.5);
+    };
+    const int w = size(*node.children[0]), h = size(*node.children[1]);
+    if (size_t(w) * size_t(h) > image::kMaxImagePixels)
+        cur.fail(node.loc, "the function image is too large");
+    auto img = std::make_shared<image::PovImage>();
+    img->width = w;
+    img->height = h;
+    img->grey = img->high_precision = true;
+    img->colours.resize(size_t(w) * size_t(h));
+    for (int i = 0; i < h; ++i)
+        for (int j = 0; j < w; ++j) {
+            const double v = cur.ctx().eval_at(body, double(j) / (w - 1), double(i) / (h - 1), 0);
+            const float g = float(std::trunc(std::clamp(std::isnan(v) ? 0.0 : v, 0.0, 1.0) * 65535) / 65535);
+            img->colours[size_t(i) * size_t(w) + size_t(j)] = {g, g, g, 1};
+        }
+    return img;
+}
+
 }  // namespace
 
 scene::ObjectPtr build_height_field(ItemCursor& cur) {
     const SourceLoc block = cur.block_loc();
-    if (!cur.at_end() && (cur.next_is_keyword("function") ||
-                          cur.next_is<std::shared_ptr<const FunctionValue>>()))
-        return unsupported_object({"height_field function", block});
+    if (cur.next_is<std::shared_ptr<const FunctionValue>>()) {
+        const auto& fn = *cur.next().value.as<std::shared_ptr<const FunctionValue>>();
+        auto img = function_image(cur, fn);
+        if (!img) return unsupported_object({"height_field function", block});
+        return field_object(cur, block, *img);
+    }
     if (cur.next_is_vector_like()) {  // POV-Ray 1's leading vector
         cur.warn(cur.peek().loc, "the vector before a height_field's image is ignored");
         cur.expect_vecn("");
@@ -107,29 +172,7 @@ scene::ObjectPtr build_height_field(ItemCursor& cur) {
     if (file.width < 2 || file.height < 2)
         cur.fail(loc, "a height_field image needs at least 2 x 2 pixels");
 
-    scene::HeightField hf;
-    hf.columns = file.width;
-    hf.rows = file.height;
-    auto heights = std::make_shared<std::vector<uint16_t>>(grid_of(image::store_as_pov(file, *format, decode)));
-    hf.heights_hash = hash_heights(*heights);
-    hf.heights = std::move(heights);
-    for (;;) {
-        if (cur.accept_keyword("water_level")) {
-            hf.water_level = cur.expect_float("water_level");
-            if (cur.ctx().language_version < 2.0) hf.water_level /= 256;  // POV-Ray 1's 0..256
-        } else if (cur.accept_keyword("smooth")) {
-            hf.smooth = true;
-        } else if (cur.accept_keyword("hierarchy")) {
-            hf.hierarchy = cur.optional_bool();
-        } else {
-            break;
-        }
-    }
-    scene::Object obj;
-    obj.loc = block;
-    obj.shape = std::move(hf);
-    read_object_modifiers(cur, obj, [](const Item&) { return false; }, {});
-    return std::make_shared<scene::Object>(std::move(obj));
+    return field_object(cur, block, image::store_as_pov(file, *format, decode));
 }
 
 }  // namespace lumen::interp

@@ -75,6 +75,25 @@ TEST_F(BuildHeightField, OptionsAndTheSameFileInEveryFormatGivesTheSameHeights) 
     EXPECT_NE(g.heights_hash, a.heights_hash);
 }
 
+TEST_F(BuildHeightField, FunctionImagesGiveHeightXZFromFunctionX1MinusZ) {
+    auto h = shape_of<scene::HeightField>(
+        "#declare F = function { x * 0.5 + y * 0.25 }\n"
+        "height_field { function 5, 3 { F(x, y, 0) } water_level 0.1 }");
+    EXPECT_EQ(h.columns, 5);
+    EXPECT_EQ(h.rows, 3);
+    EXPECT_DOUBLE_EQ(h.water_level, 0.1);
+    // Grid z = 0 is the image's bottom row, function y = 1: trunc((0 + 0.25) * 65535).
+    EXPECT_EQ(h.at(0, 0), 16383);
+    EXPECT_EQ(h.at(4, 2), 32767);  // x = 1, y = 0
+    EXPECT_EQ(h.at(2, 1), uint16_t((0.25 + 0.125) * 65535));
+    // Values beyond [0, 1] are clamped; pigment functions are not supported.
+    EXPECT_EQ(shape_of<scene::HeightField>("height_field { function 2, 2 { 3 } }").at(1, 1), 65535);
+    auto o = first_object("height_field { function 10, 10 { pigment { rgb 1 } } }");
+    EXPECT_TRUE(std::holds_alternative<scene::UnsupportedShape>(o->shape));
+    EXPECT_EQ(error_of("height_field { function 1, 10 { x } }"),
+              "t.pov:1:25: error: a function image needs 2 to 65536 pixels a side");
+}
+
 TEST_F(BuildHeightField, ErrorsAreLocated) {
     EXPECT_EQ(error_of("height_field { png \"no_such_file.png\" }"),
               "t.pov:1:20: error: cannot find image file 'no_such_file.png'");

@@ -19,9 +19,11 @@ namespace {
 constexpr double kEps = 1e-10;
 constexpr double kSideTolerance = 1e-4;  // how far outside its triangle a hit still counts
 
-// The ray in grid units.
+// The ray in grid units, with the reciprocals of its x and z directions (0 where the ray
+// does not move along the axis) for the walk.
 struct GridRay {
     glm::dvec3 o, d;
+    double inv_x = d.x != 0 ? 1 / d.x : 0, inv_z = d.z != 0 ? 1 / d.z : 0;
     double y(double t) const { return o.y + t * d.y; }
 };
 
@@ -32,16 +34,17 @@ template <class Visit>
 bool walk(const GridRay& r, double size, int x_lo, int x_hi, int z_lo, int z_hi, double t0,
           double t1, Visit&& visit) {
     constexpr double inf = Aabb::inf;
+    const double per_cell = 1 / size;  // exact: sizes are powers of 4
     auto cell = [&](double p, int lo, int hi) {
-        return std::clamp(int(std::floor(p / size)), lo, hi);
+        return std::clamp(int(std::floor(p * per_cell)), lo, hi);
     };
     int ix = cell(r.o.x + t0 * r.d.x, x_lo, x_hi), iz = cell(r.o.z + t0 * r.d.z, z_lo, z_hi);
     const int sx = r.d.x > 0 ? 1 : r.d.x < 0 ? -1 : 0, sz = r.d.z > 0 ? 1 : r.d.z < 0 ? -1 : 0;
-    auto next_boundary = [&](int i, int step, double o, double d) {
-        return step == 0 ? inf : ((i + (step > 0)) * size - o) / d;
+    auto next_boundary = [&](int i, int step, double o, double inv) {
+        return step == 0 ? inf : ((i + (step > 0)) * size - o) * inv;
     };
-    double tx = next_boundary(ix, sx, r.o.x, r.d.x), tz = next_boundary(iz, sz, r.o.z, r.d.z);
-    const double dtx = sx ? size / std::abs(r.d.x) : inf, dtz = sz ? size / std::abs(r.d.z) : inf;
+    double tx = next_boundary(ix, sx, r.o.x, r.inv_x), tz = next_boundary(iz, sz, r.o.z, r.inv_z);
+    const double dtx = sx ? size * std::abs(r.inv_x) : inf, dtz = sz ? size * std::abs(r.inv_z) : inf;
     double ta = t0;
     const int steps = (x_hi - x_lo) + (z_hi - z_lo) + 2;
     for (int k = 0; k < steps; ++k) {
@@ -148,6 +151,61 @@ glm::dvec3 smooth_normal(const HeightFieldShape& s, const glm::dvec3& p) {
     return len > 0 ? n / len : s.grid_to_space.normal({0, 1, 0});
 }
 
+// The height ranges of the cells (their four corners), then of blocks of 4 x 4 of the level
+// below, until a level has at most 4 x 4 blocks.
+std::vector<HeightFieldShape::Level> range_pyramid(const HeightFieldShape& s) {
+    std::vector<HeightFieldShape::Level> levels(1);
+    HeightFieldShape::Level& cells = levels[0];
+    cells.columns = s.columns - 1;
+    cells.rows = s.rows - 1;
+    cells.range.resize(size_t(cells.columns) * size_t(cells.rows));
+    for (int z = 0; z < cells.rows; ++z)
+        for (int x = 0; x < cells.columns; ++x) {
+            const auto [lo, hi] = std::minmax({s.at(x, z), s.at(x + 1, z), s.at(x, z + 1), s.at(x + 1, z + 1)});
+            cells.range[size_t(z) * size_t(cells.columns) + size_t(x)] = {uint16_t(lo), uint16_t(hi)};
+        }
+    constexpr int kFanOut = 4;
+    while (levels.back().columns > kFanOut || levels.back().rows > kFanOut) {
+        const HeightFieldShape::Level& below = levels.back();
+        HeightFieldShape::Level up;
+        up.size = below.size * kFanOut;
+        up.columns = (below.columns + kFanOut - 1) / kFanOut;
+        up.rows = (below.rows + kFanOut - 1) / kFanOut;
+        up.range.assign(size_t(up.columns) * size_t(up.rows), {65535, 0});
+        for (int z = 0; z < below.rows; ++z)
+            for (int x = 0; x < below.columns; ++x) {
+                const auto& from = below.range[size_t(z) * size_t(below.columns) + size_t(x)];
+                auto& to = up.range[size_t(z / kFanOut) * size_t(up.columns) + size_t(x / kFanOut)];
+                to = {std::min(to[0], from[0]), std::max(to[1], from[1])};
+            }
+        levels.push_back(std::move(up));
+    }
+    return levels;
+}
+
+// One ray's descent through the pyramid: a block the ray's heights can meet is walked at the
+// level below, down to the cells, whose triangles are tested; the first cell with a hit ends
+// the search.
+struct Descent {
+    const HeightFieldShape& s;
+    const GridRay& r;
+    double t0, t1, tmin;
+    CellHit& hit;
+
+    bool enter(int level, int bx, int bz, double ta, double tb) const {
+        const HeightFieldShape::Level& lv = s.levels[size_t(level)];
+        const auto& range = lv.range[size_t(bz) * size_t(lv.columns) + size_t(bx)];
+        if (!heights_overlap(r, ta, tb, range[0], range[1])) return false;
+        if (level == 0) return hit_cell(s, r, bx, bz, t0, t1, tmin, hit);
+        const HeightFieldShape::Level& below = s.levels[size_t(level) - 1];
+        const int ratio = lv.size / below.size;
+        const int x_lo = bx * ratio, z_lo = bz * ratio;
+        return walk(r, below.size, x_lo, std::min(x_lo + ratio - 1, below.columns - 1), z_lo,
+                    std::min(z_lo + ratio - 1, below.rows - 1), ta, tb,
+                    [&](int x, int z, double a, double b) { return enter(level - 1, x, z, a, b); });
+    }
+};
+
 }  // namespace
 
 std::unique_ptr<HeightFieldShape> make_height_field(const scene::HeightField& hf,
@@ -170,23 +228,7 @@ std::unique_ptr<HeightFieldShape> make_height_field(const scene::HeightField& hf
     s->water = 65536.0 * hf.water_level;
     s->floor = std::max(double(*lo), s->water) - 0.001;
     s->top = *hi + 0.001;
-    // Blocks of about sqrt(W) x sqrt(H) cells, with the height range of each.
-    const int cells_x = s->columns - 1, cells_z = s->rows - 1;
-    s->block = std::max(1, int(std::sqrt(double(std::max(cells_x, cells_z)))));
-    s->block_columns = (cells_x + s->block - 1) / s->block;
-    s->block_rows = (cells_z + s->block - 1) / s->block;
-    s->block_range.assign(size_t(s->block_columns) * size_t(s->block_rows), {65535, 0});
-    for (int z = 0; z < s->rows; ++z)
-        for (int x = 0; x < s->columns; ++x) {
-            const uint16_t h = uint16_t(s->at(x, z));
-            // A vertex on a block edge belongs to the blocks on both sides.
-            for (int bz = std::max(0, (z - 1) / s->block); bz <= std::min(s->block_rows - 1, z / s->block); ++bz)
-                for (int bx = std::max(0, (x - 1) / s->block); bx <= std::min(s->block_columns - 1, x / s->block); ++bx) {
-                    auto& range = s->block_range[size_t(bz) * size_t(s->block_columns) + size_t(bx)];
-                    range[0] = std::min(range[0], h);
-                    range[1] = std::max(range[1], h);
-                }
-        }
+    s->levels = range_pyramid(*s);
     s->smooth = hf.smooth;
     if (s->smooth) s->normals = vertex_normals(*s);
     s->valid = true;
@@ -196,6 +238,7 @@ std::unique_ptr<HeightFieldShape> make_height_field(const scene::HeightField& hf
 bool intersect(const HeightFieldShape& s, const LocalRay& ray, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
     const GridRay r{s.grid_to_space.inv_point(ray.o), s.grid_to_space.inv_vector(ray.d)};
+    if (!std::isfinite(r.inv_x) || !std::isfinite(r.inv_z)) return false;
     const Aabb box{{0, s.floor, 0}, {double(s.columns - 1), s.top, double(s.rows - 1)}};
     double t0, t1;
     if (!SlabRay(r.o, r.d).hits(box, -Aabb::inf, Aabb::inf, t0, t1)) return false;
@@ -204,21 +247,12 @@ bool intersect(const HeightFieldShape& s, const LocalRay& ray, double tmin, doub
     const double from = std::max(t0, tmin);
     if (!(from <= t1)) return false;
     CellHit hit{};
-    const int cells_x = s.columns - 2, cells_z = s.rows - 2;  // the last cell indices
-    auto cell = [&](int x, int z, double ta, double tb) {
-        const double y1 = s.at(x, z), y2 = s.at(x + 1, z), y3 = s.at(x, z + 1), y4 = s.at(x + 1, z + 1);
-        if (!heights_overlap(r, ta, tb, std::min({y1, y2, y3, y4}), std::max({y1, y2, y3, y4})))
-            return false;
-        return hit_cell(s, r, x, z, t0, t1, tmin, hit);
-    };
-    auto block = [&](int bx, int bz, double ta, double tb) {
-        const auto& range = s.block_range[size_t(bz) * size_t(s.block_columns) + size_t(bx)];
-        if (!heights_overlap(r, ta, tb, range[0], range[1])) return false;
-        const int x_lo = bx * s.block, z_lo = bz * s.block;
-        return walk(r, 1, x_lo, std::min(x_lo + s.block - 1, cells_x), z_lo,
-                    std::min(z_lo + s.block - 1, cells_z), ta, tb, cell);
-    };
-    if (!walk(r, s.block, 0, s.block_columns - 1, 0, s.block_rows - 1, from, t1, block))
+    const HeightFieldShape::Level& top = s.levels.back();
+    Descent descent{s, r, t0, t1, tmin, hit};
+    if (!walk(r, top.size, 0, top.columns - 1, 0, top.rows - 1, from, t1,
+              [&](int bx, int bz, double ta, double tb) {
+                  return descent.enter(int(s.levels.size()) - 1, bx, bz, ta, tb);
+              }))
         return false;
     h.t = hit.t;
     h.normal = s.smooth ? smooth_normal(s, r.o + hit.t * r.d) : s.grid_to_space.normal(hit.normal);

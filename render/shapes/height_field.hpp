@@ -1,6 +1,6 @@
-// height_field: two triangles per grid cell, searched along the ray by a two-level walk over
-// blocks of cells and the cells in them, each skipped when the ray's height range misses
-// theirs. The object transform is held by the shape (always baked): smooth normals are
+// height_field: two triangles per grid cell, searched along the ray by a walk over a pyramid
+// of blocks (4 x 4 cells, 16 x 16, ...) and the cells in them, each skipped when the ray's
+// height range misses theirs (the same hits as POV-Ray's two-level walk, found faster). The object transform is held by the shape (always baked): smooth normals are
 // blended after each corner normal has gone to world space, as POV-Ray blends them.
 #pragma once
 #include <array>
@@ -19,9 +19,12 @@ struct HeightFieldShape {
     scene::Transform grid_to_space;
     double floor = 0, top = 0;  // the searched box's y range, in height levels
     double water = 0;           // the water level in height levels (inside below it)
-    int block = 1;              // cells per block side
-    int block_columns = 0, block_rows = 0;
-    std::vector<std::array<uint16_t, 2>> block_range;  // min and max height in each block
+    // Level 0: the cells; level k: blocks of 4^k x 4^k cells; the last has few blocks.
+    struct Level {
+        int size = 1, columns = 0, rows = 0;               // cells per side; block counts
+        std::vector<std::array<uint16_t, 2>> range;        // min and max height in each block
+    };
+    std::vector<Level> levels;
     bool smooth = false;
     std::vector<std::array<int16_t, 3>> normals;  // per vertex, int(32767 n), smooth only
     bool valid = false;

@@ -1,7 +1,8 @@
 // height_field: one of the probe images of tests/data/images (make_height_images.py) as a lit
 // field seen at an angle, with a checker in 3D that shows where its triangles lie.
 // Declare Kind: 0 grey 8-bit PNG, 1 grey 16-bit PNG, 2 RGB 8-bit PNG (red high byte, green
-// low byte), 3 palette PNG, 4 PGM, 5 PPM (ASCII), 6 grey TGA, 7 RLE true-colour TGA.
+// low byte), 3 palette PNG, 4 PGM, 5 PPM (ASCII), 6 grey TGA, 7 RLE true-colour TGA,
+// 8 a function image (function 30, 20 { expr }, y of the function along -z).
 // Smooth (0/1), Water (water_level), Csg (1: the field minus a sphere, intersected with a box).
 #version 3.7;
 #ifndef (Kind) #declare Kind = 0; #end
@@ -24,6 +25,7 @@ background { rgb <0.2, 0.3, 0.4> }
     #case (5) ppm concat(Dir, "hf_rgb.ppm") #break
     #case (6) tga concat(Dir, "hf_grey.tga") #break
     #case (7) concat(Dir, "hf_rgb_rle.tga") #break
+    #case (8) function 30, 20 { 0.45 + 0.3 * sin(x * 7) * cos(y * 4) + 0.2 * y * y } #break
     #end
     water_level Water
     #if (Smooth) smooth #end
