@@ -1,5 +1,5 @@
 // height_field: two triangles per grid cell, searched along the ray by a walk over a pyramid
-// of blocks (4 x 4 cells, 16 x 16, ...) and the cells in them, each skipped when the ray's
+// of blocks (8 x 8 cells, 64 x 64, ...) and the cells in them, each skipped when the ray's
 // height range misses theirs (the same hits as POV-Ray's two-level walk, found faster). The object transform is held by the shape (always baked): smooth normals are
 // blended after each corner normal has gone to world space, as POV-Ray blends them.
 #pragma once
@@ -19,7 +19,7 @@ struct HeightFieldShape {
     scene::Transform grid_to_space;
     double floor = 0, top = 0;  // the searched box's y range, in height levels
     double water = 0;           // the water level in height levels (inside below it)
-    // Level 0: the cells; level k: blocks of 4^k x 4^k cells; the last has few blocks.
+    // Level 0: the cells; level k: blocks of 8^k x 8^k cells; the last has few blocks.
     struct Level {
         int size = 1, columns = 0, rows = 0;               // cells per side; block counts
         std::vector<std::array<uint16_t, 2>> range;        // min and max height in each block
