@@ -280,6 +280,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Blob>, ItemCursor& cur
     return build_blob(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::HeightField>, ItemCursor& cur) {
+    return build_height_field(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

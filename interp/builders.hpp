@@ -27,6 +27,10 @@ struct BuildContext {
     bool utf8_strings = false;
     std::function<void(const Diagnostic&)> warn;  // may be empty
     SearchPath search_path;  // where the files a scene names are looked for (density files)
+    // Evaluates the float expression `expr` with x, y and z bound (a function image's body,
+    // as in `height_field { function W, H { expr } }`); throws LumenError where it cannot.
+    // Empty when no evaluator runs (tests that build hand-made items).
+    std::function<double(const ast::Node& expr, double x, double y, double z)> eval_at;
 };
 
 // True for block keywords that the builders turn into values. Reserved words that are not

@@ -373,6 +373,18 @@ struct ShapeDumper {
         o.put("bottom", Json::num(v.bottom));
         o.put("top", Json::num(v.top));
     }
+    // The grid's size and a hash of its heights (not the values: a field has thousands).
+    void operator()(const scene::HeightField& h) const {
+        o.put("type", Json::str("height_field"));
+        o.put("columns", Json::num(h.columns));
+        o.put("rows", Json::num(h.rows));
+        char hash[17];
+        std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(h.heights_hash));
+        o.put("heights_hash", Json::str(hash));
+        o.put("water_level", Json::num(h.water_level));
+        put_if(o, "smooth", h.smooth, false);
+        put_if(o, "hierarchy", h.hierarchy, true);
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

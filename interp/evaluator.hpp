@@ -106,6 +106,8 @@ public:
     Value call_macro_value(const ast::Node& macro, const ast::Node& call);
     // A user-defined function called in an expression (user_functions.cpp).
     Value call_function(const FunctionValue& fn, const ast::Node& call);
+    // `expr` evaluated as a function body with x, y, z bound (BuildContext::eval_at).
+    double eval_at(const ast::Node& expr, double x, double y, double z);
     // The Macro node a name refers to, or null.
     const ast::Node* macro_named(const std::string& name);
 

@@ -11,6 +11,9 @@ using ast::Kind;
 Evaluator::Evaluator(SourceManager& sources, const InterpOptions& options, WarningSink warn)
     : budget(options), sources_(sources), options_(options), warn_(std::move(warn)) {
     ctx.warn = warn_;
+    ctx.eval_at = [this](const ast::Node& expr, double x, double y, double z) {
+        return eval_at(expr, x, y, z);
+    };
     if (options_.version) {
         ctx.language_version = *options_.version;
         version_given = true;

@@ -200,11 +200,6 @@ struct ShapeBoxes {
     ShapeBox operator()(const scene::Superellipsoid&) const {
         return {{glm::dvec3(-1.0001), glm::dvec3(1.0001)}};
     }
-    // POV-Ray's box: each element's bounding sphere in the element's own space (a sphere; a
-    // cylinder's, centred on its axis and reaching its ends' rims; the end caps'), carried
-    // into the blob's space as a sphere again: its box through the element's transform, then
-    // the largest half-width of that box as the radius (measured: a scaled, rotated sphere
-    // gets a cube). A cylinder's space turns z onto the axis by the smallest rotation.
     // POV-Ray's box: the widest of the spheres and the lemon's equator, from the bottom of
     // the bottom sphere to the top of the top one (measured).
     ShapeBox operator()(const scene::Ovus& v) const {
@@ -212,6 +207,11 @@ struct ShapeBoxes {
         const double r = std::max({v.bottom, v.top, l.radius - l.offset});
         return {{{-r, -v.bottom, -r}, {r, v.bottom + v.top, r}}};
     }
+    // POV-Ray's box: each element's bounding sphere in the element's own space (a sphere; a
+    // cylinder's, centred on its axis and reaching its ends' rims; the end caps'), carried
+    // into the blob's space as a sphere again: its box through the element's transform, then
+    // the largest half-width of that box as the radius (measured: a scaled, rotated sphere
+    // gets a cube). A cylinder's space turns z onto the axis by the smallest rotation.
     ShapeBox operator()(const scene::Blob& b) const {
         Extents out = empty_box();
         auto add = [&](const glm::dmat4& to_blob, bool exact, const glm::dvec3& centre, double r) {
@@ -254,6 +254,15 @@ struct ShapeBoxes {
                 std::sqrt(c.radius * c.radius + 0.25 * len * len));
         }
         return {out};
+    }
+    // The box POV-Ray searches: x and z over the grid, y from the water level (or the lowest
+    // height) - 0.001 to the highest + 0.001, in the field's units (heights / 65536).
+    ShapeBox operator()(const scene::HeightField& h) const {
+        if (!h.heights || h.heights->empty()) return {{glm::dvec3(0), glm::dvec3(0)}};
+        const auto [lo, hi] = std::minmax_element(h.heights->begin(), h.heights->end());
+        // Water above every height leaves the two reversed: POV-Ray reports them swapped.
+        const double y0 = std::max(double(*lo), 65536.0 * h.water_level) - 0.001, y1 = *hi + 0.001;
+        return {{{0, std::min(y0, y1) / 65536.0, 0}, {1, std::max(y0, y1) / 65536.0, 1}}};
     }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {

@@ -39,4 +39,14 @@ Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
     return result;
 }
 
+double Evaluator::eval_at(const ast::Node& expr, double x, double y, double z) {
+    budget.step(expr.loc);
+    ScopedSet vm(in_function_body_, true);
+    FrameGuard frame(symbols);
+    symbols.local("x", Value{x, expr.loc});
+    symbols.local("y", Value{y, expr.loc});
+    symbols.local("z", Value{z, expr.loc});
+    return eval_float(expr);
+}
+
 }  // namespace lumen::interp

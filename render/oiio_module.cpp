@@ -1,61 +1,17 @@
-// write_with_oiio(): loads liblumen_oiio.so on first use, from the folder of the running
-// executable, else from where the build put it.
-#include <dlfcn.h>
-#include <unistd.h>
-
-#include <filesystem>
-#include <mutex>
+// write_with_oiio(): the OpenImageIO module's writer (image/oiio_module.hpp).
 #include <stdexcept>
 #include <vector>
 
+#include "image/oiio/lumen_oiio.h"
+#include "image/oiio_module.hpp"
 #include "render/image_files.hpp"
-#include "render/oiio/lumen_oiio.h"
 
 namespace lumen::render {
-namespace {
-
-constexpr const char* kModuleName = "liblumen_oiio.so";
-
-std::filesystem::path executable_folder() {
-    std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    return ec ? std::filesystem::path() : exe.parent_path();
-}
-
-// The writer function, or null with `why` set. Loaded once per process.
-LumenOiioWrite load_writer(std::string& why) {
-    static std::once_flag once;
-    static LumenOiioWrite writer = nullptr;
-    static std::string error;
-    std::call_once(once, [] {
-        std::vector<std::string> candidates;
-        if (const auto folder = executable_folder(); !folder.empty())
-            candidates.push_back((folder / kModuleName).string());
-#ifdef LUMEN_OIIO_MODULE
-        candidates.push_back(LUMEN_OIIO_MODULE);
-#endif
-        for (const std::string& path : candidates) {
-            if (!std::filesystem::exists(path)) continue;
-            void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-            if (!handle) {
-                error = dlerror();
-                continue;
-            }
-            writer = reinterpret_cast<LumenOiioWrite>(dlsym(handle, LUMEN_OIIO_WRITE_SYMBOL));
-            if (writer) return;
-            error = path + " has no " LUMEN_OIIO_WRITE_SYMBOL;
-        }
-        if (error.empty()) error = std::string(kModuleName) + " was not found beside lumen";
-    });
-    why = error;
-    return writer;
-}
-
-}  // namespace
 
 void write_with_oiio(const EncodedImage& image, const char* format, const std::string& path) {
     std::string why;
-    const LumenOiioWrite write = load_writer(why);
+    const auto write = reinterpret_cast<LumenOiioWrite>(
+        image::oiio_module_function(LUMEN_OIIO_WRITE_SYMBOL, why));
     if (!write)
         throw std::runtime_error("the OpenImageIO writer is missing (" + why + ")");
     LumenOiioImage spec{};

@@ -16,6 +16,7 @@
 #include "render/shapes/quadric.hpp"
 #include "render/shapes/sphere.hpp"
 #include "render/shapes/superellipsoid.hpp"
+#include "render/shapes/height_field.hpp"
 #include "render/shapes/text.hpp"
 #include "render/shapes/torus.hpp"
 #include "render/shapes/triangle.hpp"

@@ -32,7 +32,8 @@
     X(Quadric, "quadric")                      \
     X(Superellipsoid, "superellipsoid")        \
     X(Blob, "blob")                            \
-    X(Ovus, "ovus")
+    X(Ovus, "ovus")  \
+    X(HeightField, "height_field")
 
 namespace lumen::scene {
 
@@ -58,8 +59,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "height_field", "isosurface", "julia_fractal", "lemon",
-    "light_group", "parametric", "sphere_sweep"};
+    "isosurface", "julia_fractal", "lemon", "light_group", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

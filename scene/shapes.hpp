@@ -3,6 +3,8 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -175,6 +177,21 @@ struct Quadric {
 struct Superellipsoid {
     double e = 1, n = 1;
     LUMEN_FIELDS(f("e", s.e), f("n", s.n))
+};
+// height_field { FILE | function W, H {..} [water_level w] [smooth] [hierarchy B] }: heights
+// 0..65535 on a grid of columns (x) by rows (z), row z = 0 being the image's bottom row. Cell
+// (x, z) is two triangles split by the diagonal (x+1, z)-(x, z+1); the grid fills
+// [0,1] x [0, h/65536] x [0,1] before the object's transforms.
+struct HeightField {
+    int columns = 0, rows = 0;  // each >= 2
+    std::shared_ptr<const std::vector<uint16_t>> heights;  // rows * columns, row z = 0 first
+    uint64_t heights_hash = 0;  // of the values: hashed and dumped instead of the grid
+    double water_level = 0;     // nothing below it is drawn; in units of the field's height
+    bool smooth = false, hierarchy = true;
+    uint16_t at(int x, int z) const { return (*heights)[size_t(z) * size_t(columns) + size_t(x)]; }
+    LUMEN_FIELDS(f("columns", s.columns), f("rows", s.rows), f("heights_hash", s.heights_hash),
+                 f("water_level", s.water_level), f("smooth", s.smooth),
+                 f("hierarchy", s.hierarchy))
 };
 
 // blob { threshold T sphere { <C>, R, [strength] S } cylinder { <A>, <B>, R, S } ... }: the

@@ -146,6 +146,17 @@ scene::Blob sample_shape(std::type_identity<scene::Blob>) {
     b.components.push_back(squashed);
     return b;
 }
+// A 5 x 4 grid of uneven heights (flat normals: smooth ones are not perpendicular to the
+// triangles, which the normal test assumes).
+scene::HeightField sample_shape(std::type_identity<scene::HeightField>) {
+    scene::HeightField h;
+    h.columns = 5;
+    h.rows = 4;
+    h.heights = std::make_shared<const std::vector<uint16_t>>(std::vector<uint16_t>{
+        9000, 20000, 30000, 12000, 5000, 15000, 40000, 52000, 30000, 10000,
+        8000, 36000, 60000, 41000, 20000, 3000, 10000, 25000, 18000, 7000});
+    return h;
+}
 
 // ---- an instance compiled the way the renderer compiles it --------------------------------
 
