@@ -2,13 +2,14 @@
 // [smooth] [hierarchy B] OBJECT_MODIFIERS }: the image read now (image/image_file.hpp) and
 // turned into POV-Ray's 16-bit heights; or `function W, H { expr }`, an image made by
 // evaluating a float expression (pigment functions are not supported).
+#include <algorithm>
 #include <cmath>
-
-#include "parser/ast.hpp"
+#include <optional>
 
 #include "image/image_file.hpp"
 #include "image/pov_storage.hpp"
 #include "interp/build_common.hpp"
+#include "parser/ast.hpp"
 
 namespace lumen::interp {
 
@@ -157,9 +158,9 @@ scene::ObjectPtr build_height_field(ItemCursor& cur) {
         if (!format) cur.fail(loc, "cannot tell the image type of '" + name + "' from its extension");
     }
     if (*format == image::Format::Iff) cur.fail(loc, "iff images cannot make a height_field");
+    // Their heights are palette indices, which the OpenImageIO reader does not give.
     if (*format == image::Format::Gif || *format == image::Format::Pot)
-        cur.fail(loc, std::string(image::format_keyword(*format)) +
-                          " height fields are not supported (their heights are palette indices)");
+        return unsupported_object({std::string("height_field ") + image::format_keyword(*format), loc});
     const image::Decode decode = read_file_modifiers(cur);
     const std::string path = FileResolver(cur.ctx().search_path).find(name, FileResolver::Kind::Image);
     if (path.empty()) cur.fail(loc, "cannot find image file '" + name + "'");
