@@ -32,7 +32,7 @@
     X(Quadric, "quadric")                      \
     X(Superellipsoid, "superellipsoid")        \
     X(Blob, "blob")                            \
-    X(Ovus, "ovus")  \
+    X(Ovus, "ovus")                            \
     X(HeightField, "height_field")
 
 namespace lumen::scene {
