@@ -110,6 +110,7 @@ scene::ObjectPtr build_prism(ItemCursor& cur);  // build_swept.cpp
 scene::ObjectPtr build_bicubic_patch(ItemCursor& cur);  // build_bicubic_patch.cpp, as a mesh
 scene::ObjectPtr build_lathe(ItemCursor& cur);
 scene::ObjectPtr build_sor(ItemCursor& cur);
+scene::ObjectPtr build_julia_fractal(ItemCursor& cur);  // build_julia_fractal.cpp
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
 bool is_unsupported_shape(const std::string& keyword);
 // Reads the object modifiers that follow a shape's own arguments. `extra` handles

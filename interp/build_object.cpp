@@ -259,6 +259,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemC
     return share(object_of(cur, scene::Superellipsoid{en[0], en[1]}));
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::JuliaFractal>, ItemCursor& cur) {
+    return build_julia_fractal(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -200,6 +200,11 @@ struct ShapeBoxes {
     ShapeBox operator()(const scene::Superellipsoid&) const {
         return {{glm::dvec3(-1.0001), glm::dvec3(1.0001)}};
     }
+    // POV-Ray's box about the bounding sphere.
+    ShapeBox operator()(const scene::JuliaFractal& j) const {
+        const double r = j.bound_radius();
+        return {{glm::dvec3(-r), glm::dvec3(r)}};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

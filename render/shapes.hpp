@@ -17,3 +17,4 @@
 #include "render/shapes/text.hpp"
 #include "render/shapes/torus.hpp"
 #include "render/shapes/triangle.hpp"
+#include "render/shapes/julia_fractal.hpp"

@@ -30,7 +30,8 @@
     X(Sor, "sor")                              \
     X(Poly, "poly", "cubic", "quartic", "polynomial") \
     X(Quadric, "quadric")                      \
-    X(Superellipsoid, "superellipsoid")
+    X(Superellipsoid, "superellipsoid")        \
+    X(JuliaFractal, "julia_fractal")
 
 namespace lumen::scene {
 
@@ -56,7 +57,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "blob", "height_field", "isosurface", "julia_fractal", "lemon",
+    "blob", "height_field", "isosurface", "lemon",
     "light_group", "ovus", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
