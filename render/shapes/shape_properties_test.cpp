@@ -122,13 +122,16 @@ scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
     return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
 }
 scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
-// With c = 0 the quaternion Julia set is the unit ball; the tilted slice (w = -z) makes it
-// the ellipsoid x^2 + y^2 + 2 z^2 = 1. Precision 1000, so no grazing chord is stepped over.
+// With c = 0 the quaternion Julia set is the unit 4-ball; the slice w = 1 - 0.75 z cuts it in
+// the ellipsoid x^2 + y^2 + 1.5625 (z - 0.48)^2 = 0.36, clear of the bounding sphere (a slice
+// through the origin touches it, and POV-Ray misses crossings in the last step before it).
+// Precision 1000, so no grazing chord is stepped over.
 scene::JuliaFractal sample_shape(std::type_identity<scene::JuliaFractal>) {
     scene::JuliaFractal j;
     j.c = {0, 0, 0, 0};
     j.precision = 1000;
-    j.slice = {0, 0, std::sqrt(0.5), std::sqrt(0.5)};
+    j.slice = {0, 0, 0.6, 0.8};
+    j.slice_distance = 0.8;
     return j;
 }
 // julia_fractal's bisection stops at 1e-7 in object space (POV-Ray's): a hit found twice may
