@@ -22,6 +22,9 @@ namespace {
 using scene::JuliaAlgebra;
 using scene::JuliaFunction;
 
+// POV-Ray's MIN_ISECT_DEPTH: the tracer's nearest accepted hit (world distance).
+constexpr double kMinIntersectionDepth = 1e-4;
+
 // A bound on one ray's march (a fractal scaled far down has a tiny step in world space).
 constexpr int kMaxMarchSteps = 1 << 20;
 
@@ -103,21 +106,24 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
 }
 
 // POV-Ray's D_Iteration: the same test, and for an escaped point the distance to march.
-// Quaternions: the estimate ln|z|^2 / (2 |z'|) (z' the derivative of the chain); measured
-// against POV-Ray's silhouettes. Inside points give the step.
+// Quaternions: the estimate ln|z_i|^2 / (2 |z'|) with |z'| = 2^i |z_0| ... |z_i-1| for sqr,
+// ln|z_i|^2 / (3 |z'|) with |z'| = 3^i |z_0| ... |z_i-1| for cube (the iterates' norms, not
+// their squares): both measured, POV-Ray's silhouettes are reproduced pixel for pixel.
+// Inside points give the step.
 bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
                       double& estimate) {
     if (s.algebra == JuliaAlgebra::Hypercomplex) return hypercomplex_estimate(s, p, u, estimate);
+    const bool cube = s.function == JuliaFunction::Cube;
     glm::dvec4 z = start_point(s, p);
     double d2 = 1;
     for (int i = 1; i <= s.iterations; ++i) {
         const double n2 = glm::dot(z, z);
         if (n2 > s.exit_value) {
-            estimate = 0.5 * std::log(n2) / std::sqrt(d2);
+            estimate = (cube ? 1.0 / 3 : 0.5) * std::log(n2) / std::sqrt(d2);
             if (!(estimate >= 0)) estimate = 0;  // 0/0 or inf/inf: take the plain step
             return false;
         }
-        d2 *= s.function == JuliaFunction::Sqr ? 4 * n2 : 9 * n2 * n2;
+        d2 *= cube ? 9 * n2 : 4 * n2;
         z = next_iterate(s, z);
     }
     estimate = s.step;
@@ -286,16 +292,18 @@ bool intersect(const JuliaFractalShape& s, const LocalRay& r, double tmin, doubl
     kmax = std::min(kmax, tmax * len);
     if (kmax < kJuliaTolerance) return false;
     // POV-Ray marches from 1e-7 whatever the ray's minimum depth, and a stand-alone fractal
-    // reports only its first crossing, which the tracer drops when it is too near: the march
-    // from there decides which thin parts shadow a point. Only when that crossing lies
-    // before tmin (a shadow ray leaving through the back, a CSG asking again beyond a hit)
-    // does lumen march again from tmin, for the crossings POV-Ray's CSG lists garble.
+    // reports only its first crossing, which the tracer drops when it is nearer than 1e-4:
+    // then the object is not hit at all (a shadow ray leaving the surface it starts on is not
+    // shadowed by the parts beyond). A first crossing further away but before tmin is a CSG
+    // asking again beyond a hit: lumen marches on from tmin (POV-Ray's own lists of further
+    // crossings are unreliable).
     const double start = std::max(kmin, kJuliaTolerance);
     double depth = 0;
     glm::dvec3 normal;
     if (!first_crossing(s, r.o, u, start, kmax, depth, normal)) return false;
     if (!(depth / len > tmin) &&
-        !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, depth, normal))
+        (depth / len < kMinIntersectionDepth ||
+         !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, depth, normal)))
         return false;
     const double t = depth / len;
     if (!(t > tmin) || !(t < tmax)) return false;
