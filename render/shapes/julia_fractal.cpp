@@ -84,8 +84,8 @@ bool iterate(const JuliaFractalShape& s, const glm::dvec3& p, glm::dvec4* orbit)
 bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
                            double& estimate) {
     Bicomplex z = as_pair(start_point(s, p));
-    const glm::dvec3 dw = -glm::dvec3(s.slice) / s.slice.w;
-    const Bicomplex along = to_bicomplex(glm::dvec4(u, glm::dot(u, dw)));
+    // The slope ignores w's change along the ray (measured, as for the normal).
+    const Bicomplex along = to_bicomplex(glm::dvec4(u, 0));
     Bicomplex d{Complex(1, 0), Complex(1, 0)};
     const Bicomplex c = as_pair(s.c);
     const Complex e(s.exponent.x, s.exponent.y);
@@ -139,12 +139,12 @@ template <class V> void rescale(V* rows, int n) {
         for (int r = 0; r < n; ++r) rows[r] *= 1 / big;
 }
 
-// The gradient of |z_N|^2 with respect to the object point, w following the slice.
+// The gradient of |z_N|^2 with respect to (x, y, z) of the 4-D start point, w held (POV-Ray
+// leaves out w's dependence on the slice: measured, tilted slices shade the same).
 glm::dvec3 orbit_normal(const JuliaFractalShape& s, const glm::dvec4* orbit) {
-    const glm::dvec3 dw = -glm::dvec3(s.slice) / s.slice.w;  // dw/dx, dw/dy, dw/dz
     const int n = std::max(s.iterations, 0);
     if (s.algebra == JuliaAlgebra::Quaternion) {
-        glm::dvec4 rows[3] = {{1, 0, 0, dw.x}, {0, 1, 0, dw.y}, {0, 0, 1, dw.z}};
+        glm::dvec4 rows[3] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
         for (int i = 0; i < n; ++i) {
             const glm::dvec4& z = orbit[i];
             for (glm::dvec4& v : rows) {
@@ -175,8 +175,8 @@ glm::dvec3 orbit_normal(const JuliaFractalShape& s, const glm::dvec4* orbit) {
     const Bicomplex D = as_pair(d), zn = as_pair(orbit[n]);
     const Complex i1(0, 1);
     const double gx = dot(zn, D), gy = dot(zn, {i1 * D.a, i1 * D.b}),
-                 gz = dot(zn, {i1 * D.a, -i1 * D.b}), gw = dot(zn, {-D.a, D.b});
-    return glm::dvec3(gx, gy, gz) + gw * dw;
+                 gz = dot(zn, {i1 * D.a, -i1 * D.b});
+    return {gx, gy, gz};
 }
 
 // The ray's span in the bounding sphere (unit direction u), as POV-Ray clips it.
