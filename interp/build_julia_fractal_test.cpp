@@ -68,6 +68,17 @@ TEST_F(BuildJulia, BadInputIsALocatedError) {
     EXPECT_NE(error_of("julia_fractal { <1, 0, 0, 0> pigment { rgb 1 } max_iteration 5 }"), "");
 }
 
+TEST_F(BuildJulia, CsgChildrenAreMarked) {
+    // POV-Ray's child objects list every crossing; a stand-alone fractal only its first.
+    auto o = first_object(
+        "#declare J = julia_fractal { <0.4, 0.2, 0.1, 0> }\n"
+        "intersection { object { J } sphere { 0, 1 } }");
+    const auto& csg = std::get<scene::Csg>(o->shape);
+    ASSERT_EQ(csg.children.size(), 2u);
+    EXPECT_TRUE(std::get<scene::JuliaFractal>(csg.children[0]->shape).csg_child);
+    EXPECT_FALSE(shape_of<scene::JuliaFractal>("julia_fractal { <0.4, 0.2, 0.1, 0> }").csg_child);
+}
+
 TEST_F(BuildJulia, MaxIterationIsBounded) {
     auto j = shape_of<scene::JuliaFractal>("julia_fractal { <1, 0, 0, 0> max_iteration 1e9 }");
     EXPECT_EQ(j.max_iteration, 4096);

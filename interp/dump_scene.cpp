@@ -369,6 +369,7 @@ struct ShapeDumper {
         o.put("precision", Json::num(j.precision));
         o.put("slice", vec4(j.slice));
         o.put("slice_distance", Json::num(j.slice_distance));
+        put_if(o, "csg_child", j.csg_child, false);
     }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};

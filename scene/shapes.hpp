@@ -193,10 +193,11 @@ struct JuliaFractal {
     double precision = 20;
     std::array<double, 4> slice{0, 0, 0, 1};  // unit, slice[3] != 0
     double slice_distance = 0;
+    bool csg_child = false;  // a child of a CSG block (set there)
     LUMEN_FIELDS(f("c", s.c), f("algebra", s.algebra), f("function", s.function),
                  f("exponent", s.exponent), f("max_iteration", s.max_iteration),
                  f("precision", s.precision), f("slice", s.slice),
-                 f("slice_distance", s.slice_distance))
+                 f("slice_distance", s.slice_distance), f("csg_child", s.csg_child))
 
     // POV-Ray's bounding sphere about the origin: radius 1 + |c| (plus 1e-7) up to 2 for
     // quaternions, 4 for hypercomplex numbers. Escaping is |z|^2 > exit_value().

@@ -275,6 +275,7 @@ JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j) {
     s.slice = glm::dvec4(j.slice[0], j.slice[1], j.slice[2], j.slice[3]);
     if (!(std::fabs(s.slice.w) >= 1e-10)) s.iterations = -1;  // the reader refuses it
     s.slice_distance = j.slice_distance;
+    s.csg_child = j.csg_child;
     const double r = j.bound_radius();
     s.radius2 = r * r;
     s.exit_value = j.exit_value();
@@ -291,18 +292,18 @@ bool intersect(const JuliaFractalShape& s, const LocalRay& r, double tmin, doubl
     if (!clip_to_sphere(s, r.o, u, kmin, kmax)) return false;
     kmax = std::min(kmax, tmax * len);
     if (kmax < kJuliaTolerance) return false;
-    // POV-Ray marches from 1e-7 whatever the ray's minimum depth, and a stand-alone fractal
+    // POV-Ray marches from 1e-7 whatever the ray's minimum depth. A stand-alone fractal
     // reports only its first crossing, which the tracer drops when it is nearer than 1e-4:
     // then the object is not hit at all (a shadow ray leaving the surface it starts on is not
-    // shadowed by the parts beyond). A first crossing further away but before tmin is a CSG
-    // asking again beyond a hit: lumen marches on from tmin (POV-Ray's own lists of further
-    // crossings are unreliable).
+    // shadowed by the parts beyond; measured). A CSG child lists its further crossings too:
+    // lumen marches on from tmin for them (POV-Ray's list repeats the first depth at points
+    // further in before it reaches them; that is not reproduced).
     const double start = std::max(kmin, kJuliaTolerance);
     double depth = 0;
     glm::dvec3 normal;
     if (!first_crossing(s, r.o, u, start, kmax, depth, normal)) return false;
     if (!(depth / len > tmin) &&
-        (depth / len < kMinIntersectionDepth ||
+        ((!s.csg_child && depth / len < kMinIntersectionDepth) ||
          !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, depth, normal)))
         return false;
     const double t = depth / len;

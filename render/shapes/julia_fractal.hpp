@@ -19,6 +19,7 @@ struct JuliaFractalShape {
     glm::dvec4 slice{0, 0, 0, 1};
     double slice_distance = 0;
     double radius2 = 4, exit_value = 4;
+    bool csg_child = false;  // lists every crossing, not only the first
 };
 
 JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j);

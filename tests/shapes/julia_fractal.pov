@@ -1,7 +1,7 @@
 // julia_fractal: POV-Ray's march (steps of the distance estimate, at least 1/precision) and
 // bisection, seen on thin features, with the Jacobian normal under a light from the side.
 // Declare Kind: 0 quaternion sqr, 1 quaternion cube, 2 hypercomplex sqr, 3 hypercomplex
-// function (Fn: 0 exp, 1 sin, 2 reciprocal, 3 pwr(2, 0.3), 4 cos), 5 CSG (a box cut out).
+// function (Fn: 0 exp, 1 sin, 2 reciprocal, 3 pwr(2, 0.3), 4 cos), 5 CSG (the far half cut).
 // Declare Iter (max_iteration), Prec (precision), Slice (0: default, 1: tilted slice).
 #version 3.7;
 #ifndef (Kind) #declare Kind = 0; #end
@@ -37,12 +37,15 @@ background { rgb <0.1, 0.15, 0.2> }
 #end
 
 #if (Kind = 5)
-  difference {
-    object { Fractal() }
-    box { <-0.2, -2, -2>, <2, 2, 0.1> }
+  // The far half cut away: plane hits count where inside the fractal, fractal hits where
+  // in front of the plane. (Seen from the cut side, POV-Ray's further crossings of a fractal
+  // in CSG are unreliable: its hit list repeats the first depth at points further in.)
+  intersection {
+    object { Fractal() rotate <-20, 30, 0> }
+    plane { z, 0.1 }
     pigment { rgb <1, 0.7, 0.4> }
     finish { phong 0.5 }
-    rotate 30*y
+    scale 1.2
   }
 #else
   object { Fractal()
