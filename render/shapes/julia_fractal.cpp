@@ -1,9 +1,9 @@
 // julia_fractal: POV-Ray's march and bisection. Which thin features a ray finds depends on
-// where the steps land, so the rules are POV-Ray's: the steps are max(1/precision / |D|,
-// distance estimate) in the normalised object space, the march starts 1e-7 in (2e-7 further
-// when that point is inside), the bisection halves down to 1e-7, and the normal is computed
-// from the orbit of the last point the bisection tested (entries past its escape are those
-// of an earlier point of the same ray, as in POV-Ray's iteration stack).
+// where the steps land, so the rules are POV-Ray's (measured against its silhouettes): the
+// steps are max(1/precision, estimate) in object space along the unit direction, the march
+// starts 1e-7 in (2e-7 further when that point is inside), the bisection halves down to 1e-7,
+// and the normal is computed from the orbit of the last point the bisection tested (entries
+// past its escape are those of an earlier point of the same ray, as in POV-Ray's stack).
 #include "render/shapes/julia_fractal.hpp"
 
 #include <algorithm>
@@ -25,7 +25,7 @@ using scene::JuliaFunction;
 // POV-Ray's MIN_ISECT_DEPTH: the tracer's nearest accepted hit (world distance).
 constexpr double kMinIntersectionDepth = 1e-4;
 
-// A bound on one ray's march (a fractal scaled far down has a tiny step in world space).
+// A bound on one ray's march (a huge precision makes tiny steps).
 constexpr int kMaxMarchSteps = 1 << 20;
 
 Bicomplex as_pair(const glm::dvec4& v) { return {{v.x, v.y}, {v.z, v.w}}; }

@@ -101,21 +101,24 @@ TEST(JuliaFractal, CsgCrossingsAlternate) {
 }
 
 TEST(JuliaFractal, StandAloneStopsAtANearFirstCrossing) {
-    // A shadow ray (tmin 1e-3) from 5e-5 outside the unit ball (c = 0, w = 0), heading in:
-    // its first crossing lies nearer than POV-Ray's 1e-4, so a stand-alone fractal is not hit
-    // at all; a CSG child goes on to the crossing beyond (the way out at x = 1).
+    // c = 0 and w = 0.5: the ball of radius sqrt(0.75), clear of the bounding sphere. A shadow
+    // ray (tmin 1e-3) from 5e-5 outside it, heading in: its first crossing lies nearer than
+    // POV-Ray's 1e-4, so a stand-alone fractal is not hit at all; a CSG child goes on to the
+    // crossing beyond (the way out).
     scene::JuliaFractal j;
     j.c = {0, 0, 0, 0};
+    j.slice_distance = 0.5;
     j.precision = 100;
     JuliaFractalShape s = make_julia_fractal(j);
-    const LocalRay r{{-1.00005, 0, 0}, {1, 0, 0}};
+    const double r = std::sqrt(0.75);
+    const LocalRay ray{{-r - 5e-5, 0, 0}, {1, 0, 0}};
     ShapeHit h;
-    EXPECT_FALSE(intersect(s, r, 1e-3, 1e30, h));
-    ASSERT_TRUE(intersect(s, r, 1e-6, 1e30, h));  // a camera ray sees the entry
+    EXPECT_FALSE(intersect(s, ray, 1e-3, 1e30, h));
+    ASSERT_TRUE(intersect(s, ray, 1e-6, 1e30, h));  // a camera ray sees the entry
     EXPECT_NEAR(h.t, 5e-5, 2e-7);
     s.csg_child = true;
-    ASSERT_TRUE(intersect(s, r, 1e-3, 1e30, h));
-    EXPECT_NEAR(h.t, 2.00005, 2e-7);
+    ASSERT_TRUE(intersect(s, ray, 1e-3, 1e30, h));
+    EXPECT_NEAR(h.t, 2 * r + 5e-5, 2e-7);
 }
 
 TEST(JuliaFractal, NoIterationsOrOneDrawNothing) {

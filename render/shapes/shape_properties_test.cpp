@@ -122,16 +122,15 @@ scene::Quadric sample_shape(std::type_identity<scene::Quadric>) {
     return {{1, 2, 1.5}, {0.3, 0, 0.2}, {0.1, 0, 0}, -2.5};
 }
 scene::Superellipsoid sample_shape(std::type_identity<scene::Superellipsoid>) { return {0.5, 0.8}; }
-// With c = 0 the quaternion Julia set is the unit 4-ball; the slice w = 1 - 0.75 z cuts it in
-// the ellipsoid x^2 + y^2 + 1.5625 (z - 0.48)^2 = 0.36, clear of the bounding sphere (a slice
-// through the origin touches it, and POV-Ray misses crossings in the last step before it).
-// Precision 1000, so no grazing chord is stepped over.
+// With c = 0 the quaternion Julia set is the unit 4-ball; the slice w = 0.5 cuts it in the
+// ball of radius sqrt(0.75), clear of the bounding sphere (a slice through the origin touches
+// it, and POV-Ray misses crossings in the last step before it). Not tilted: POV-Ray's normal
+// leaves out w's dependence on the slice. Precision 1000, so no grazing chord is stepped over.
 scene::JuliaFractal sample_shape(std::type_identity<scene::JuliaFractal>) {
     scene::JuliaFractal j;
     j.c = {0, 0, 0, 0};
     j.precision = 1000;
-    j.slice = {0, 0, 0.6, 0.8};
-    j.slice_distance = 0.8;
+    j.slice_distance = 0.5;
     return j;
 }
 // julia_fractal's bisection stops at 1e-7 in object space (POV-Ray's): a hit found twice may
