@@ -15,6 +15,16 @@ scene::CsgOp csg_op(const std::string& kw) {
     return scene::CsgOp::Union;
 }
 
+// POV-Ray marks the objects of a CSG block as its children; a julia_fractal then lists all
+// its crossings instead of only the first (render/shapes/julia_fractal.cpp).
+scene::ObjectPtr in_csg(scene::ObjectPtr c) {
+    const auto* j = std::get_if<scene::JuliaFractal>(&c->shape);
+    if (!j || j->csg_child) return c;
+    auto copy = std::make_shared<scene::Object>(*c);
+    std::get<scene::JuliaFractal>(copy->shape).csg_child = true;
+    return copy;
+}
+
 }  // namespace
 
 scene::ObjectPtr build_csg(ItemCursor& cur) {
@@ -41,7 +51,7 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
         // A child after a transform would not be moved by it the way POV moves children.
         if (modifiers_seen)
             cur.fail(item.loc, "objects must come before the modifiers in " + cur.what());
-        csg.children.push_back(std::move(c));
+        csg.children.push_back(in_csg(std::move(c)));
         return true;
     };
     auto modifier = [&](const Item& item) {

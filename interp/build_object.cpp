@@ -284,6 +284,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::HeightField>, ItemCurs
     return build_height_field(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::JuliaFractal>, ItemCursor& cur) {
+    return build_julia_fractal(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -385,6 +385,28 @@ struct ShapeDumper {
         put_if(o, "smooth", h.smooth, false);
         put_if(o, "hierarchy", h.hierarchy, true);
     }
+    void operator()(const scene::JuliaFractal& j) const {
+        static const char* fns[] = {"sqr",  "cube",  "exp",  "reciprocal", "sin",   "asin",
+                                    "sinh", "asinh", "cos",  "acos",       "cosh",  "acosh",
+                                    "tan",  "atan",  "tanh", "atanh",      "ln",    "pwr"};
+        auto vec4 = [](const std::array<double, 4>& v) {
+            Json a = Json::array();
+            for (double c : v) a.push(Json::num(c));
+            return a;
+        };
+        o.put("type", Json::str("julia_fractal"));
+        o.put("c", vec4(j.c));
+        o.put("algebra", Json::str(j.algebra == scene::JuliaAlgebra::Quaternion ? "quaternion"
+                                                                                : "hypercomplex"));
+        o.put("function", Json::str(fns[static_cast<int>(j.function)]));
+        if (j.function == scene::JuliaFunction::Pwr)
+            o.put("exponent", Json::array().push(Json::num(j.exponent.x)).push(Json::num(j.exponent.y)));
+        o.put("max_iteration", Json::num(j.max_iteration));
+        o.put("precision", Json::num(j.precision));
+        o.put("slice", vec4(j.slice));
+        o.put("slice_distance", Json::num(j.slice_distance));
+        put_if(o, "csg_child", j.csg_child, false);
+    }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
         o.put("type", Json::str(ops[static_cast<int>(c.op)]));

@@ -1,5 +1,6 @@
 // Flattening block bodies into items: the heart of the evaluation model (value.hpp).
 #include <algorithm>
+#include <string_view>
 
 #include "interp/evaluator.hpp"
 #include "parser/parser.hpp"
@@ -62,6 +63,14 @@ Item value_item(Value v, SourceLoc loc) {
     return it;
 }
 
+// The built-in function names julia_fractal also takes as bare keywords (its iteration).
+bool is_julia_function_word(const std::string& w) {
+    static constexpr std::string_view words[] = {
+        "sqr", "exp", "ln", "sin", "asin", "sinh", "asinh", "cos", "acos", "cosh", "acosh",
+        "tan", "atan", "tanh", "atanh"};
+    return std::find(std::begin(words), std::end(words), w) != std::end(words);
+}
+
 Item keyword_item(const std::string& word, SourceLoc loc) {
     Item it;
     it.kind = Item::Kind::Keyword;
@@ -87,12 +96,9 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
         case Kind::Semicolon:
         case Kind::Null:
             return Flow::Normal;
-        case Kind::PolyTerm: {  // the keyword `xyz`, then <i, j, k, c>
-            Item kw;
-            kw.kind = Item::Kind::Keyword;
-            kw.keyword = "xyz";
-            kw.loc = node.loc;
-            out.push_back(std::move(kw));
+        case Kind::PolyTerm:  // the keyword `xyz`, then <i, j, k, c>
+        case Kind::PwrTerm: {  // the keyword `pwr`, then <a, b>
+            out.push_back(keyword_item(node.kind == Kind::PolyTerm ? "xyz" : "pwr", node.loc));
             VecN term;
             for (const auto& c : node.children) term.c.push_back(eval_float(*c));
             out.push_back(value_item(Value{std::move(term), node.loc}, node.loc));
@@ -118,8 +124,9 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
             return Flow::Normal;
         case Kind::Ident:
             // `internal` is a function name in functions (`internal(42)`) and a keyword in
-            // `text { internal 1 ... }`: bare at item level, it is the keyword.
-            if (node.text == "internal") {
+            // `text { internal 1 ... }`: bare at item level, it is the keyword. So are the
+            // function names julia_fractal takes (`sin`, `sqr`, ...) without arguments.
+            if (node.text == "internal" || is_julia_function_word(node.text)) {
                 out.push_back(keyword_item(node.text, node.loc));
                 return Flow::Normal;
             }

@@ -264,6 +264,11 @@ struct ShapeBoxes {
         const double y0 = std::max(double(*lo), 65536.0 * h.water_level) - 0.001, y1 = *hi + 0.001;
         return {{{0, std::min(y0, y1) / 65536.0, 0}, {1, std::max(y0, y1) / 65536.0, 1}}};
     }
+    // POV-Ray's box about the bounding sphere.
+    ShapeBox operator()(const scene::JuliaFractal& j) const {
+        const double r = j.bound_radius();
+        return {{glm::dvec3(-r), glm::dvec3(r)}};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

@@ -24,6 +24,7 @@ const char* kind_name(Kind k) {
         case Kind::Comma: return "Comma";
         case Kind::Semicolon: return "Semicolon";
         case Kind::PolyTerm: return "PolyTerm";
+        case Kind::PwrTerm: return "PwrTerm";
         case Kind::Body: return "Body";
         case Kind::Version: return "Version";
         case Kind::Include: return "Include";

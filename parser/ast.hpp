@@ -48,6 +48,7 @@ enum class Kind {
     Comma,      // ',' between items (kept: POV uses commas to separate some arguments)
     Semicolon,  // ';' outside a directive (accepted and ignored)
     PolyTerm,   // xyz(i, j, k): c in a polynomial block; children = i, j, k, c
+    PwrTerm,    // pwr(a, b) in a julia_fractal block: children = a, b
 
     // ---- directives (may appear wherever an item may) ---------------------------------
     Body,       // a sequence of items: the whole file, a directive branch, a macro body

@@ -181,6 +181,7 @@ LUMEN_NODE(keyword_item, makes<K::Keyword, finish::text>);
 LUMEN_NODE(comma_item, makes<K::Comma>);
 LUMEN_NODE(semicolon_item, makes<K::Semicolon>);
 LUMEN_NODE(poly_term, makes<K::PolyTerm>);
+LUMEN_NODE(pwr_term, makes<K::PwrTerm>);
 
 // directives
 LUMEN_NODE(unofficial_version, token<>);

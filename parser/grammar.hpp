@@ -278,9 +278,15 @@ struct poly_term : seq<TAO_PEGTL_KEYWORD("xyz"), sep, one<'('>, sep, plain_expre
                        plain_expression, list_sep, plain_expression, sep, one<')'>, sep,
                        one<':'>, sep, plain_expression> {};
 
-// item := directive | block | map_entry | ',' | ';' | poly_term | keyword | expression
+// pwr_term := 'pwr' '(' expr ',' expr ')'   (julia_fractal's complex exponent)
+struct pwr_term : seq<TAO_PEGTL_KEYWORD("pwr"), sep, one<'('>, sep, plain_expression, list_sep,
+                      plain_expression, sep, one<')'>> {};
+
+// item := directive | block | map_entry | ',' | ';' | poly_term | pwr_term | keyword
+//         | expression
 struct item : sor<directive, padded<block>, padded<map_entry>, padded<comma_item>,
-                  padded<semicolon_item>, padded<poly_term>, padded<keyword_item>,
+                  padded<semicolon_item>, padded<poly_term>, padded<pwr_term>,
+                  padded<keyword_item>,
                   padded<plain_expression>> {};
 
 // ---- directives -----------------------------------------------------------------------------

@@ -20,3 +20,4 @@
 #include "render/shapes/text.hpp"
 #include "render/shapes/torus.hpp"
 #include "render/shapes/triangle.hpp"
+#include "render/shapes/julia_fractal.hpp"

@@ -33,7 +33,8 @@
     X(Superellipsoid, "superellipsoid")        \
     X(Blob, "blob")                            \
     X(Ovus, "ovus")                            \
-    X(HeightField, "height_field")
+    X(HeightField, "height_field")             \
+    X(JuliaFractal, "julia_fractal")
 
 namespace lumen::scene {
 
@@ -59,7 +60,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "isosurface", "julia_fractal", "lemon", "light_group", "parametric", "sphere_sweep"};
+    "isosurface", "lemon", "light_group", "parametric", "sphere_sweep"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -241,6 +241,42 @@ struct Ovus {
     }
 };
 
+// julia_fractal { <c> [quaternion|hypercomplex] [function] [max_iteration N] [precision P]
+// [slice <n>, d] }: the points (x, y, z) whose 4-D point (x, y, z, w), w from n . (x,y,z,w) = d
+// (n unit), does not escape under z <- f(z) + c. Quaternions take sqr and cube only.
+enum class JuliaAlgebra { Quaternion, Hypercomplex };
+enum class JuliaFunction {
+    Sqr, Cube, Exp, Reciprocal, Sin, Asin, Sinh, Asinh, Cos, Acos, Cosh, Acosh,
+    Tan, Atan, Tanh, Atanh, Ln, Pwr
+};
+struct JuliaFractal {
+    std::array<double, 4> c{1, 0, 0, 0};
+    JuliaAlgebra algebra = JuliaAlgebra::Quaternion;
+    JuliaFunction function = JuliaFunction::Sqr;
+    glm::dvec2 exponent{0};  // pwr(a, b): the complex exponent a + b i
+    int max_iteration = 20;
+    double precision = 20;
+    std::array<double, 4> slice{0, 0, 0, 1};  // unit, slice[3] != 0
+    double slice_distance = 0;
+    bool csg_child = false;  // a child of a CSG block (set there)
+    LUMEN_FIELDS(f("c", s.c), f("algebra", s.algebra), f("function", s.function),
+                 f("exponent", s.exponent), f("max_iteration", s.max_iteration),
+                 f("precision", s.precision), f("slice", s.slice),
+                 f("slice_distance", s.slice_distance), f("csg_child", s.csg_child))
+
+    // POV-Ray's bounding sphere about the origin: radius 1 + |c| (plus 1e-7) up to 2 for
+    // quaternions, 4 for hypercomplex numbers. Escaping is |z|^2 > exit_value().
+    double bound_radius() const {
+        if (algebra == JuliaAlgebra::Hypercomplex) return 4;
+        const double r = 1 + std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] + c[3] * c[3]) + 1e-7;
+        return r < 2 ? r : 2;
+    }
+    double exit_value() const {
+        const double r = bound_radius();
+        return algebra == JuliaAlgebra::Hypercomplex ? 16 : r * r + 1e-7;
+    }
+};
+
 #undef LUMEN_FIELDS
 
 }  // namespace lumen::scene

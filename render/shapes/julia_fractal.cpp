@@ -1,0 +1,330 @@
+// julia_fractal: POV-Ray's march and bisection. Which thin features a ray finds depends on
+// where the steps land, so the rules are POV-Ray's (measured against its silhouettes): the
+// steps are max(1/precision, estimate) in object space along the unit direction, the march
+// starts 1e-7 in (2e-7 further when that point is inside), the bisection halves down to 1e-7,
+// and the normal is computed from the orbit of the last point the bisection tested (entries
+// past its escape are those of an earlier point of the same ray, as in POV-Ray's stack).
+#include "render/shapes/julia_fractal.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "render/shapes/hypercomplex.hpp"
+
+namespace lumen::render {
+
+namespace {
+
+using scene::JuliaAlgebra;
+using scene::JuliaFunction;
+
+// POV-Ray's MIN_ISECT_DEPTH: the tracer's nearest accepted hit (world distance).
+constexpr double kMinIntersectionDepth = 1e-4;
+
+// A bound on one ray's march (a huge precision makes tiny steps).
+constexpr int kMaxMarchSteps = 1 << 20;
+
+Bicomplex as_pair(const glm::dvec4& v) { return {{v.x, v.y}, {v.z, v.w}}; }
+glm::dvec4 packed(const Bicomplex& p) { return {p.a.real(), p.a.imag(), p.b.real(), p.b.imag()}; }
+
+// The 4-D point of object point p on the slice (pair form for hypercomplex numbers).
+glm::dvec4 start_point(const JuliaFractalShape& s, const glm::dvec3& p) {
+    const double w =
+        (s.slice_distance - s.slice.x * p.x - s.slice.y * p.y - s.slice.z * p.z) / s.slice.w;
+    const glm::dvec4 q(p, w);
+    return s.algebra == JuliaAlgebra::Quaternion ? q : packed(to_bicomplex(q));
+}
+
+double norm2_of(const JuliaFractalShape& s, const glm::dvec4& z) {
+    return s.algebra == JuliaAlgebra::Quaternion ? glm::dot(z, z) : 0.5 * glm::dot(z, z);
+}
+
+Complex square(const Complex& z) {  // without std::complex's inf/nan care
+    return {z.real() * z.real() - z.imag() * z.imag(), 2 * z.real() * z.imag()};
+}
+
+// One step z <- f(z) + c. For quaternion cubes, z^3 = (x (x^2 - 3d), v (3x^2 - d)).
+glm::dvec4 next_iterate(const JuliaFractalShape& s, const glm::dvec4& z) {
+    if (s.algebra == JuliaAlgebra::Quaternion) {
+        const double d = z.y * z.y + z.z * z.z + z.w * z.w, x2 = z.x * z.x;
+        if (s.function == JuliaFunction::Sqr) {
+            const double t = 2 * z.x;
+            return glm::dvec4(x2 - d, t * z.y, t * z.z, t * z.w) + s.c;
+        }
+        const double t = 3 * x2 - d;
+        return glm::dvec4(z.x * (x2 - 3 * d), t * z.y, t * z.z, t * z.w) + s.c;
+    }
+    const Bicomplex p = as_pair(z), c = as_pair(s.c);
+    const Complex e(s.exponent.x, s.exponent.y);
+    if (s.function == JuliaFunction::Sqr) return packed({square(p.a) + c.a, square(p.b) + c.b});
+    return packed({julia_function(s.function, p.a, e) + c.a,
+                   julia_function(s.function, p.b, e) + c.b});
+}
+
+// POV-Ray's Iteration: inside unless |z|^2 exceeds the exit value before one of the steps;
+// the iterates go to `orbit` (0 .. the escape or max_iteration).
+bool iterate(const JuliaFractalShape& s, const glm::dvec3& p, glm::dvec4* orbit) {
+    glm::dvec4 z = start_point(s, p);
+    if (orbit) orbit[0] = z;
+    for (int i = 1; i <= s.iterations; ++i) {
+        if (norm2_of(s, z) > s.exit_value) return false;
+        z = next_iterate(s, z);
+        if (orbit) orbit[i] = z;
+    }
+    return true;
+}
+
+// Hypercomplex numbers: |z|^2 over its rate of fall along u (from the chain's derivative),
+// used only when that lies between 1 and 30 steps, else the step. Measured against
+// POV-Ray's silhouettes (|z|^2 itself, not its excess over the exit value; the 30 steps).
+bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
+                           double& estimate) {
+    Bicomplex z = as_pair(start_point(s, p));
+    // The slope ignores w's change along the ray (measured, as for the normal).
+    const Bicomplex along = to_bicomplex(glm::dvec4(u, 0));
+    Bicomplex d{Complex(1, 0), Complex(1, 0)};
+    const Bicomplex c = as_pair(s.c);
+    const Complex e(s.exponent.x, s.exponent.y);
+    estimate = s.step;
+    for (int i = 1; i <= s.iterations; ++i) {
+        const double n2 = norm2(z);
+        if (n2 > s.exit_value) {
+            const Bicomplex dz{d.a * along.a, d.b * along.b};
+            const double slope = -2 * dot(z, dz);  // -d|z|^2/dk
+            if (slope > kJuliaTolerance && n2 > s.step * slope && n2 < 30 * s.step * slope)
+                estimate = n2 / slope;
+            return false;
+        }
+        d = {d.a * julia_derivative(s.function, z.a, e), d.b * julia_derivative(s.function, z.b, e)};
+        z = {julia_function(s.function, z.a, e) + c.a, julia_function(s.function, z.b, e) + c.b};
+    }
+    return true;
+}
+
+// POV-Ray's D_Iteration: the same test, and for an escaped point the distance to march.
+// Quaternions: the estimate ln|z_i|^2 / (2 |z'|) with |z'| = 2^i |z_0| ... |z_i-1| for sqr,
+// ln|z_i|^2 / (3 |z'|) with |z'| = 3^i |z_0| ... |z_i-1| for cube (the iterates' norms, not
+// their squares): both measured, POV-Ray's silhouettes are reproduced pixel for pixel.
+// Inside points give the step.
+bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
+                      double& estimate) {
+    if (s.algebra == JuliaAlgebra::Hypercomplex) return hypercomplex_estimate(s, p, u, estimate);
+    const bool cube = s.function == JuliaFunction::Cube;
+    glm::dvec4 z = start_point(s, p);
+    double d2 = 1;
+    for (int i = 1; i <= s.iterations; ++i) {
+        const double n2 = glm::dot(z, z);
+        if (n2 > s.exit_value) {
+            estimate = (cube ? 1.0 / 3 : 0.5) * std::log(n2) / std::sqrt(d2);
+            if (!(estimate >= 0)) estimate = 0;  // 0/0 or inf/inf: take the plain step
+            return false;
+        }
+        d2 *= cube ? 9 * n2 : 4 * n2;
+        z = next_iterate(s, z);
+    }
+    estimate = s.step;
+    return true;
+}
+
+// Keeps a running product finite without changing its direction.
+template <class V> void rescale(V* rows, int n) {
+    double big = 0;
+    for (int r = 0; r < n; ++r)
+        for (int k = 0; k < 4; ++k) big = std::max(big, std::fabs(rows[r][k]));
+    if (big > 1e100 || (big < 1e-100 && big > 0))
+        for (int r = 0; r < n; ++r) rows[r] *= 1 / big;
+}
+
+// The gradient of |z_N|^2 with respect to (x, y, z) of the 4-D start point, w held (POV-Ray
+// leaves out w's dependence on the slice: measured, tilted slices shade the same).
+glm::dvec3 orbit_normal(const JuliaFractalShape& s, const glm::dvec4* orbit) {
+    const int n = std::max(s.iterations, 0);
+    if (s.algebra == JuliaAlgebra::Quaternion) {
+        glm::dvec4 rows[3] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec4& z = orbit[i];
+            for (glm::dvec4& v : rows) {
+                if (s.function == JuliaFunction::Sqr) {  // z v + v z
+                    v = {z.x * v.x - z.y * v.y - z.z * v.z - z.w * v.w, z.x * v.y + z.y * v.x,
+                         z.x * v.z + z.z * v.x, z.x * v.w + z.w * v.x};
+                } else {  // v z^2 + z v z + z^2 v
+                    const glm::dvec4 z2 = quaternion_product(z, z);
+                    v = quaternion_product(v, z2) +
+                        quaternion_product(quaternion_product(z, v), z) +
+                        quaternion_product(z2, v);
+                }
+            }
+            rescale(rows, 3);
+        }
+        const glm::dvec4& zn = orbit[n];
+        return {glm::dot(rows[0], zn), glm::dot(rows[1], zn), glm::dot(rows[2], zn)};
+    }
+    // Hypercomplex: the chain's derivative is one number D; d z_N = D dh.
+    const Complex e(s.exponent.x, s.exponent.y);
+    glm::dvec4 d(1, 0, 1, 0);
+    for (int i = 0; i < n; ++i) {
+        const Bicomplex z = as_pair(orbit[i]), dd = as_pair(d);
+        d = packed({dd.a * julia_derivative(s.function, z.a, e),
+                    dd.b * julia_derivative(s.function, z.b, e)});
+        rescale(&d, 1);
+    }
+    const Bicomplex D = as_pair(d), zn = as_pair(orbit[n]);
+    const Complex i1(0, 1);
+    const double gx = dot(zn, D), gy = dot(zn, {i1 * D.a, i1 * D.b}),
+                 gz = dot(zn, {i1 * D.a, -i1 * D.b});
+    return {gx, gy, gz};
+}
+
+// The ray's span in the bounding sphere (unit direction u), as POV-Ray clips it.
+bool clip_to_sphere(const JuliaFractalShape& s, const glm::dvec3& o, const glm::dvec3& u,
+                    double& kmin, double& kmax) {
+    const double oc2 = glm::dot(o, o), closest = -glm::dot(o, u);
+    if (oc2 >= s.radius2 && closest < 1e-10) return false;
+    const double half2 = s.radius2 - oc2 + closest * closest;
+    if (!(half2 > 1e-10)) return false;
+    const double half = std::sqrt(half2);
+    kmin = closest - half;
+    kmax = closest + half;
+    return true;
+}
+
+// The iteration stack of one ray: max_iteration + 1 iterates.
+class Orbit {
+public:
+    explicit Orbit(int iterations) {
+        const size_t n = size_t(std::max(iterations, 0)) + 1;
+        if (n > small_.size()) {
+            big_.assign(n, glm::dvec4(0));
+            data_ = big_.data();
+        }
+    }
+    glm::dvec4* data() { return data_; }
+
+private:
+    std::array<glm::dvec4, 65> small_{};
+    std::vector<glm::dvec4> big_;
+    glm::dvec4* data_ = small_.data();
+};
+
+// POV-Ray's search along o + k u (u unit) from k = `start` up to `depth_max`: the depth k of
+// the first change of state, the normal there.
+bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::dvec3& u,
+                    double start, double depth_max, double& depth,
+                    glm::dvec3& normal) {
+    // The step is 1/precision in object space whatever the transform (measured: scaling
+    // the object changes nothing in POV-Ray's march).
+    const double step = s.step;
+    depth = start;
+    glm::dvec3 next = o + depth * u;
+    double dist = 0, dist_next = 0;
+    bool current_in = iterate_estimate(s, next, u, dist);
+    if (current_in) {  // starting inside (a shadow or CSG ray): move off the start
+        next += 2 * kJuliaTolerance * u;
+        depth += 2 * kJuliaTolerance;
+        if (depth > depth_max) return false;
+        current_in = iterate_estimate(s, next, u, dist);
+    }
+    // March: each step at least `step`, until the state changes; `at` trails one step.
+    glm::dvec3 at = next;
+    for (int steps = 0;; ++steps) {
+        if (steps == kMaxMarchSteps) return false;
+        dist = std::max(dist, step);
+        depth += dist;
+        if (depth > depth_max) return false;
+        at = next;
+        next += dist * u;
+        if (iterate_estimate(s, next, u, dist_next) != current_in) break;
+        dist = dist_next;
+    }
+    depth -= dist;
+    // Bisect the step that crossed: `at` stays on the starting side.
+    Orbit orbit(s.iterations);
+    while (dist > kJuliaTolerance) {
+        dist *= 0.5;
+        const glm::dvec3 mid = at + dist * u;
+        if (iterate(s, mid, orbit.data()) == current_in) {
+            at = mid;
+            depth += dist;
+            if (depth > depth_max) return false;
+        }
+    }
+    if (!current_in) depth += dist;  // entering: report the first point found inside
+    normal = orbit_normal(s, orbit.data());
+    return true;
+}
+
+}  // namespace
+
+JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j) {
+    JuliaFractalShape s;
+    s.algebra = j.algebra;
+    s.function = j.function;
+    // Probed: POV-Ray's hypercomplex `cube` iterates z^2 + c (inside() agrees with `sqr`
+    // at every point tried, and the renders are the same).
+    if (j.algebra == JuliaAlgebra::Hypercomplex && j.function == JuliaFunction::Cube)
+        s.function = JuliaFunction::Sqr;
+    const glm::dvec4 c(j.c[0], j.c[1], j.c[2], j.c[3]);
+    s.c = j.algebra == JuliaAlgebra::Quaternion ? c : packed(to_bicomplex(c));
+    s.exponent = j.exponent;
+    s.iterations = std::max(j.max_iteration, 0);
+    s.step = 1 / std::max(j.precision, 1.0);
+    s.slice = glm::dvec4(j.slice[0], j.slice[1], j.slice[2], j.slice[3]);
+    if (!(std::fabs(s.slice.w) >= 1e-10)) s.iterations = -1;  // the reader refuses it
+    s.slice_distance = j.slice_distance;
+    s.csg_child = j.csg_child;
+    const double r = j.bound_radius();
+    s.radius2 = r * r;
+    s.exit_value = j.exit_value();
+    return s;
+}
+
+bool intersect(const JuliaFractalShape& s, const LocalRay& r, double tmin, double tmax,
+               ShapeHit& h) {
+    if (s.iterations < 0) return false;
+    const double len = glm::length(r.d);
+    if (!(len > 0) || !std::isfinite(len)) return false;
+    const glm::dvec3 u = r.d / len;
+    double kmin = 0, kmax = 0;
+    if (!clip_to_sphere(s, r.o, u, kmin, kmax)) return false;
+    kmax = std::min(kmax, tmax * len);
+    if (kmax < kJuliaTolerance) return false;
+    // POV-Ray marches from 1e-7 whatever the ray's minimum depth. A stand-alone fractal
+    // reports only its first crossing, which the tracer drops when it is nearer than 1e-4:
+    // then the object is not hit at all (a shadow ray leaving the surface it starts on is not
+    // shadowed by the parts beyond; measured). A CSG child lists its further crossings too:
+    // lumen marches on from tmin for them (POV-Ray's list repeats the first depth at points
+    // further in before it reaches them; that is not reproduced).
+    const double start = std::max(kmin, kJuliaTolerance);
+    double depth = 0;
+    glm::dvec3 normal;
+    if (!first_crossing(s, r.o, u, start, kmax, depth, normal)) return false;
+    if (!(depth / len > tmin) &&
+        ((!s.csg_child && depth / len < kMinIntersectionDepth) ||
+         !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, depth, normal)))
+        return false;
+    const double t = depth / len;
+    if (!(t > tmin) || !(t < tmax)) return false;
+    h.t = t;
+    h.normal = normal;
+    const double n2 = glm::dot(normal, normal);
+    if (!(n2 > 0) || !std::isfinite(n2)) h.normal = -u;
+    return true;
+}
+
+bool inside(const JuliaFractalShape& s, const glm::dvec3& p) {
+    if (s.iterations < 0) return false;
+    if (glm::dot(p, p) > s.radius2) return false;  // outside the bounding sphere
+    return iterate(s, p, nullptr);
+}
+
+Aabb bounds(const JuliaFractalShape& s) {
+    if (s.iterations < 0) return {};
+    const double r = std::sqrt(s.radius2);
+    return {glm::dvec3(-r), glm::dvec3(r)};
+}
+
+}  // namespace lumen::render
