@@ -8,22 +8,15 @@
 
 #include <png.h>
 
+#include "image/png_errors.hpp"
+
 #include "image/image_file.hpp"
 
 namespace lumen::image {
 
 namespace {
 
-struct ErrorText {
-    char text[256] = "corrupt PNG data";
-};
-
-[[noreturn]] void on_error(png_structp png, png_const_charp message) {
-    auto* e = static_cast<ErrorText*>(png_get_error_ptr(png));
-    std::snprintf(e->text, sizeof e->text, "%s", message);
-    png_longjmp(png, 1);
-}
-void on_warning(png_structp, png_const_charp) {}
+using ErrorText = PngErrorText;
 
 // What the header says, after the transformations asked for.
 struct Header {
@@ -46,7 +39,8 @@ struct Reader {
 
 // The libpng calls, free of C++ objects with destructors (libpng errors longjmp out of here).
 bool read_header(Reader& r, std::FILE* file, Header& h) {
-    r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.error, on_error, on_warning);
+    r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.error, png_error_to_text,
+                                   png_ignore_warning);
     if (!r.png) return false;
     r.info = png_create_info_struct(r.png);
     if (!r.info || setjmp(png_jmpbuf(r.png))) return false;

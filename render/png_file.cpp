@@ -15,22 +15,14 @@
 
 #include <png.h>
 
+#include "image/png_errors.hpp"
+
 #include "render/image_files.hpp"
 
 namespace lumen::render {
 namespace {
 
-struct ErrorText {
-    char text[256] = "unknown libpng error";
-};
-
-[[noreturn]] void on_error(png_structp png, png_const_charp message) {
-    auto* e = static_cast<ErrorText*>(png_get_error_ptr(png));
-    std::snprintf(e->text, sizeof e->text, "%s", message);
-    png_longjmp(png, 1);
-}
-
-void on_warning(png_structp, png_const_charp) {}
+using ErrorText = image::PngErrorText;
 
 struct RowFeed {
     const RowSource* source;
@@ -48,7 +40,8 @@ const uint8_t* next_row(const RowFeed& feed, int y) noexcept {
 // The libpng calls, free of C++ objects with destructors (libpng errors longjmp out of here).
 // Returns false with `error` filled in.
 bool encode(std::FILE* file, const EncodedImage& image, const RowFeed& feed, ErrorText& error) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_error, on_warning);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error,
+                                              image::png_error_to_text, image::png_ignore_warning);
     if (!png) return false;
     png_infop info = png_create_info_struct(png);
     if (!info || setjmp(png_jmpbuf(png))) {
