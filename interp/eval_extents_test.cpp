@@ -125,6 +125,16 @@ TEST_F(ExtentsTest, MatchPovRay) {
     }
 }
 
+// The corner is stored in single precision on every axis (not within a tolerance).
+TEST_F(ExtentsTest, CornerIsSinglePrecisionOnEveryAxis) {
+    run("#declare Lo = min_extent(box { -1.2, 1.2 });\n#declare Hi = max_extent(box { -1.2, 1.2 });\n");
+    const std::vector<double> lo = components(var("Lo")), hi = components(var("Hi"));
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(lo[a], double(float(-1.2))) << a;
+        EXPECT_EQ(hi[a], double(float(float(-1.2) + float(2.4)))) << a;
+    }
+}
+
 TEST_F(ExtentsTest, NeedsAnObject) {
     EXPECT_EQ(expr_error("max_extent(1)"), "expr:1:12: error: expected an object, found a float");
 }
