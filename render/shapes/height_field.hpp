@@ -40,14 +40,7 @@ bool inside(const HeightFieldShape& s, const glm::dvec3& p);
 Aabb bounds(const HeightFieldShape& s);        // the searched box
 Aabb solid_bounds(const HeightFieldShape& s);  // the box and the column below it
 
-using HeightFieldPtr = std::unique_ptr<HeightFieldShape>;
-inline bool intersect(const HeightFieldPtr& s, const LocalRay& r, double tmin, double tmax,
-                      ShapeHit& h) {
-    return intersect(*s, r, tmin, tmax, h);
-}
-inline bool inside(const HeightFieldPtr& s, const glm::dvec3& p) { return inside(*s, p); }
-inline Aabb bounds(const HeightFieldPtr& s) { return bounds(*s); }
-inline Aabb solid_bounds(const HeightFieldPtr& s) { return solid_bounds(*s); }
+using HeightFieldPtr = std::unique_ptr<HeightFieldShape>;  // shape.hpp forwards to it
 
 template <> struct ShapeTraits<scene::HeightField> {
     using Prepared = HeightFieldPtr;

@@ -23,18 +23,11 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
 bool inside(const MeshShape& s, const glm::dvec3& p);
 Aabb bounds(const MeshShape& s);
 
-// The prepared form is the pointer: these forward to the mesh.
-using MeshPtr = std::unique_ptr<MeshShape>;
-inline bool intersect(const MeshPtr& s, const LocalRay& r, double tmin, double tmax,
-                      ShapeHit& h) {
-    return intersect(*s, r, tmin, tmax, h);
-}
-inline bool inside(const MeshPtr& s, const glm::dvec3& p) { return inside(*s, p); }
-inline Aabb bounds(const MeshPtr& s) { return bounds(*s); }
 // Only a mesh with an inside_vector has an inside.
-inline Aabb solid_bounds(const MeshPtr& s) {
-    return s->mesh->inside_vector ? bounds(*s) : Aabb{};
-}
+inline Aabb solid_bounds(const MeshShape& s) { return s.mesh->inside_vector ? bounds(s) : Aabb{}; }
+
+// The prepared form is the pointer (shape.hpp forwards to the mesh).
+using MeshPtr = std::unique_ptr<MeshShape>;
 
 template <> struct ShapeTraits<scene::Mesh> {
     using Prepared = MeshPtr;

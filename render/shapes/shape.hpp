@@ -5,6 +5,7 @@
 // hit.
 #pragma once
 #include <concepts>
+#include <memory>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -54,6 +55,18 @@ struct PreparedBy {
 
 // Free functions every prepared shape has (found by argument-dependent lookup). A shape with
 // no inside (disc, triangle, polygon) says so with inside() false and an empty solid box.
+// Large prepared shapes (meshes, height fields) are held by pointer: these forward to them.
+template <class S>
+bool intersect(const std::unique_ptr<S>& s, const LocalRay& r, double tmin, double tmax,
+               ShapeHit& h) {
+    return intersect(*s, r, tmin, tmax, h);
+}
+template <class S> bool inside(const std::unique_ptr<S>& s, const glm::dvec3& p) {
+    return inside(*s, p);
+}
+template <class S> Aabb bounds(const std::unique_ptr<S>& s) { return bounds(*s); }
+template <class S> Aabb solid_bounds(const std::unique_ptr<S>& s) { return solid_bounds(*s); }
+
 template <class S>
 concept PreparedShape = requires(const S& s, const LocalRay& r, double t, ShapeHit& h,
                                  const glm::dvec3& p) {
