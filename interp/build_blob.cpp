@@ -18,11 +18,9 @@ namespace {
 // POV-Ray bounds nothing here; lumen does, so a runaway #while gets a located error.
 constexpr size_t kMaxComponents = 1'000'000;
 
-SourceLoc next_loc(ItemCursor& cur) { return cur.at_end() ? cur.here() : cur.peek().loc; }
-
 // POV-Ray uses only the radius's square: -1 is 1, and 0 makes a component without effect.
 double read_radius(ItemCursor& cur, const char* what) {
-    const SourceLoc loc = next_loc(cur);
+    const SourceLoc loc = cur.next_loc();
     const double r = cur.expect_float("");
     if (!std::isfinite(r)) cur.fail(loc, std::string("a blob ") + what + " component's radius is not finite");
     return std::fabs(r);

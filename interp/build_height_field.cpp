@@ -59,7 +59,7 @@ image::Decode read_file_modifiers(ItemCursor& cur) {
                 decode = {image::Decode::Kind::SRGB, 1};
                 continue;
             }
-            const SourceLoc loc = cur.at_end() ? cur.here() : cur.peek().loc;
+            const SourceLoc loc = cur.next_loc();
             const double g = cur.expect_float("gamma");
             if (!(g > 0)) cur.fail(loc, "the image gamma must be positive");
             decode = {image::Decode::Kind::Power, g};
@@ -145,7 +145,7 @@ scene::ObjectPtr build_height_field(ItemCursor& cur) {
         cur.expect_vecn("");
     }
     std::optional<image::Format> format;
-    SourceLoc loc = cur.at_end() ? cur.here() : cur.peek().loc;
+    SourceLoc loc = cur.next_loc();
     if (!cur.at_end() && cur.peek().kind == Item::Kind::Keyword) {
         format = image::format_from_keyword(cur.peek().keyword);
         if (format) cur.next();

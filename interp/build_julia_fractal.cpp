@@ -34,7 +34,7 @@ constexpr std::pair<const char*, JuliaFunction> kFunctionWords[] = {
 
 // A 4-D vector: a float fills all four components, shorter vectors get zeros.
 std::array<double, 4> read_vector4(ItemCursor& cur, const char* after) {
-    const SourceLoc loc = cur.at_end() ? cur.here() : cur.peek().loc;
+    const SourceLoc loc = cur.next_loc();
     const std::vector<double> v = cur.expect_vecn(after);
     if (v.size() > 4) cur.fail(loc, "julia_fractal needs a 4-D vector here");
     if (v.size() == 1) return {v[0], v[0], v[0], v[0]};

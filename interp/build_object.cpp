@@ -33,8 +33,6 @@ glm::dvec3 unit_or_fail(ItemCursor& cur, const glm::dvec3& v, SourceLoc loc, con
     return v / len;
 }
 
-// Where the next argument is written, for its error messages.
-SourceLoc next_loc(ItemCursor& cur) { return cur.at_end() ? cur.here() : cur.peek().loc; }
 
 glm::dvec3 read_point(ItemCursor& cur) {  // 2-D points (polygon) get z = 0
     std::vector<double> c = cur.expect_vecn("");
@@ -188,7 +186,7 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Sor>, ItemCursor& cur)
 // replaces the earlier value (measured with POV-Ray 3.7).
 scene::ObjectPtr read_polynomial(ItemCursor& cur) {
     scene::Poly p;
-    SourceLoc loc = next_loc(cur);
+    SourceLoc loc = cur.next_loc();
     p.order = cur.expect_int("");
     if (p.order < 2 || p.order > 35)
         cur.fail(loc, "polynomial order must be 2 to 35, not " + std::to_string(p.order));
@@ -227,12 +225,12 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Poly>, ItemCursor& cur
     } else if (cur.what() == "quartic") {
         p.order = 4;
     } else {
-        SourceLoc loc = next_loc(cur);
+        SourceLoc loc = cur.next_loc();
         p.order = cur.expect_int("");
         if (p.order < 2 || p.order > 35)
             cur.fail(loc, "poly order must be 2 to 35, not " + std::to_string(p.order));
     }
-    SourceLoc loc = next_loc(cur);
+    SourceLoc loc = cur.next_loc();
     p.coeffs = cur.expect_vecn("");
     const size_t terms = scene::Poly::term_count(p.order);
     if (p.coeffs.size() != terms)
@@ -252,7 +250,7 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Quadric>, ItemCursor& 
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemCursor& cur) {
-    SourceLoc loc = next_loc(cur);
+    SourceLoc loc = cur.next_loc();
     std::vector<double> en = cur.expect_vecn("");
     if (en.size() == 1) en.push_back(en[0]);  // a float is <f, f>, as for any 2-D vector
     if (en.size() != 2) cur.fail(loc, "superellipsoid needs a 2-D vector <e, n>");
@@ -264,7 +262,7 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Superellipsoid>, ItemC
 scene::ObjectPtr read_primitive(std::type_identity<scene::Ovus>, ItemCursor& cur) {
     scene::Ovus o;
     for (double* r : {&o.bottom, &o.top}) {
-        const SourceLoc loc = next_loc(cur);
+        const SourceLoc loc = cur.next_loc();
         *r = cur.expect_float("");
         if (!(*r >= 0) || !std::isfinite(*r)) cur.fail(loc, "both ovus radii must be positive");
     }

@@ -33,6 +33,8 @@ public:
     const Item& next();  // precondition: !at_end()
     // Location of the last item consumed (or the block) for errors about missing items.
     SourceLoc here() const;
+    // Where the next argument is written (the last item's place at the end), for its errors.
+    SourceLoc next_loc() { return at_end() ? here() : peek().loc; }
 
     // Type tests on the next item (false at the end).
     bool next_is_keyword(std::string_view word = {});

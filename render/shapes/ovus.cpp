@@ -26,7 +26,7 @@ glm::dvec3 lemon_normal(const scene::Ovus::Lemon& l, const glm::dvec3& p) {
     return {k * p.x, p.y - l.height, k * p.z};
 }
 
-// Roots of |o + t d - c|^2 = r^2 in (tmin, tmax), ascending.
+// Roots of |o + t d - c|^2 = r^2, ascending (the caller keeps those in its range).
 int sphere_roots(const glm::dvec3& c, double r, const LocalRay& ray, double* ts) {
     const glm::dvec3 v = ray.o - c;
     return solve_quadratic(glm::dot(ray.d, ray.d), glm::dot(v, ray.d), glm::dot(v, v) - r * r, ts);
