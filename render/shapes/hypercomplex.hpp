@@ -1,13 +1,15 @@
-// The 4-D algebras julia_fractal iterates in. Quaternions (i^2 = j^2 = k^2 = ijk = -1) are
-// kept as glm::dvec4 (x, y, z, w). Hypercomplex numbers (i^2 = j^2 = -1, k^2 = +1, ij = k,
-// commutative) split into two independent complex numbers,
+// The 4-D algebras julia_fractal iterates in. Quaternions (i^2 = j^2 = k^2 = ijk = -1) and
+// hypercomplex numbers (i^2 = j^2 = -1, k^2 = +1, ij = k, commutative) are both kept as
+// glm::dvec4 (x, y, z, w) = x + y i + z j + w k.
+//
+// A hypercomplex number splits into two independent complex numbers (its duplex form),
 //     a = (x - w) + (y + z) i,   b = (x + w) + (y - z) i,
-// so that h -> f(h) is f applied to a and to b: every function POV-Ray offers (exp, sin, ...)
-// is the complex one on each half. |h|^2 = (|a|^2 + |b|^2) / 2.
+// so that f(h) for any complex function f is f applied to a and to b. POV-Ray iterates in the
+// 4-D form, converting to the duplex form and back at every step; near the set's boundary the
+// orbit depends on that rounding, so lumen does the same arithmetic in the same order.
 #pragma once
 #include <complex>
 
-#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "scene/shapes.hpp"
@@ -16,7 +18,6 @@ namespace lumen::render {
 
 using Complex = std::complex<double>;
 
-// ---- quaternions ------------------------------------------------------------------------
 inline glm::dvec4 quaternion_product(const glm::dvec4& p, const glm::dvec4& q) {
     return {p.x * q.x - p.y * q.y - p.z * q.z - p.w * q.w,
             p.x * q.y + p.y * q.x + p.z * q.w - p.w * q.z,
@@ -24,26 +25,27 @@ inline glm::dvec4 quaternion_product(const glm::dvec4& p, const glm::dvec4& q) {
             p.x * q.w + p.y * q.z - p.z * q.y + p.w * q.x};
 }
 
-// ---- hypercomplex numbers as a pair of complex numbers -----------------------------------
-struct Bicomplex {
-    Complex a, b;
-};
-
-inline Bicomplex to_bicomplex(const glm::dvec4& h) {
-    return {{h.x - h.w, h.y + h.z}, {h.x + h.w, h.y - h.z}};
-}
-inline glm::dvec4 from_bicomplex(const Bicomplex& p) {
-    const Complex u = 0.5 * (p.a + p.b), v = 0.5 * (p.b - p.a);  // h = u + v k
-    return {u.real(), u.imag(), -v.imag(), v.real()};
-}
-inline double norm2(const Bicomplex& p) { return 0.5 * (std::norm(p.a) + std::norm(p.b)); }
-// The 4-D dot product of two hypercomplex numbers, in pair form.
-inline double dot(const Bicomplex& p, const Bicomplex& q) {
-    return 0.5 * ((p.a * std::conj(q.a)).real() + (p.b * std::conj(q.b)).real());
+inline glm::dvec4 hypercomplex_product(const glm::dvec4& p, const glm::dvec4& q) {
+    return {p.x * q.x - p.y * q.y - p.z * q.z + p.w * q.w,
+            p.y * q.x + p.x * q.y - p.w * q.z - p.z * q.w,
+            p.z * q.x - p.w * q.y + p.x * q.z - p.y * q.w,
+            p.w * q.x + p.z * q.y + p.y * q.z + p.x * q.w};
 }
 
-// f(z) and f'(z) of julia_fractal's function `fn` (pwr: z^e, e the complex exponent).
-Complex julia_function(scene::JuliaFunction fn, const Complex& z, const Complex& e);
-Complex julia_derivative(scene::JuliaFunction fn, const Complex& z, const Complex& e);
+// |h|^2, summed as POV-Ray's escape test sums it for `fn` (sqr pairs x with w, y with z).
+double hypercomplex_norm2(scene::JuliaFunction fn, const glm::dvec4& h);
+
+// One step of the iteration: f(h) + c (sqr and cube both square: POV-Ray's hypercomplex cube
+// iterates z^2 + c; measured, its inside test agrees with sqr's everywhere).
+glm::dvec4 hypercomplex_step(scene::JuliaFunction fn, const glm::dvec4& h, const glm::dvec4& c,
+                             const Complex& exponent);
+
+// The factor each iterate after the first contributes to POV-Ray's derivative chain: h for
+// sqr and cube, -1/h^2 for reciprocal, and f(h) itself (not f') for the other functions.
+glm::dvec4 hypercomplex_chain_factor(scene::JuliaFunction fn, const glm::dvec4& h,
+                                     const Complex& exponent);
+
+// The complex function `fn` as POV-Ray evaluates it (its formulas and branches; pwr: z^e).
+Complex julia_complex_function(scene::JuliaFunction fn, const Complex& z, const Complex& e);
 
 }  // namespace lumen::render

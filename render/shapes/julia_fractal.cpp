@@ -25,26 +25,33 @@ using scene::JuliaFunction;
 // POV-Ray's MIN_ISECT_DEPTH: the tracer's nearest accepted hit (world distance).
 constexpr double kMinIntersectionDepth = 1e-4;
 
+// The hypercomplex estimate is used only while |z|^2 falls along the ray faster than this
+// (POV-Ray's 1e-8 on half the slope).
+constexpr double kJuliaSlopeTolerance = 2e-8;
+
 // A bound on one ray's march (a huge precision makes tiny steps).
 constexpr int kMaxMarchSteps = 1 << 20;
 
-Bicomplex as_pair(const glm::dvec4& v) { return {{v.x, v.y}, {v.z, v.w}}; }
-glm::dvec4 packed(const Bicomplex& p) { return {p.a.real(), p.a.imag(), p.b.real(), p.b.imag()}; }
-
-// The 4-D point of object point p on the slice (pair form for hypercomplex numbers).
-glm::dvec4 start_point(const JuliaFractalShape& s, const glm::dvec3& p) {
+// The 4-D point of object point p on the slice.
+// `z_from_y`: POV-Ray's inside test for the hypercomplex functions other than sqr, cube and
+// reciprocal starts from (x, y, y) instead of (x, y, z), its slice w taken from that point
+// too; its march does not (measured: the renders of exp, sin, cos, pwr only match so).
+glm::dvec4 start_point(const JuliaFractalShape& s, const glm::dvec3& p, bool z_from_y = false) {
+    const glm::dvec3 q(p.x, p.y, z_from_y ? p.y : p.z);
     const double w =
-        (s.slice_distance - s.slice.x * p.x - s.slice.y * p.y - s.slice.z * p.z) / s.slice.w;
-    const glm::dvec4 q(p, w);
-    return s.algebra == JuliaAlgebra::Quaternion ? q : packed(to_bicomplex(q));
+        (s.slice_distance - s.slice.x * q.x - s.slice.y * q.y - s.slice.z * q.z) / s.slice.w;
+    return {q, w};
+}
+
+// Hypercomplex functions other than sqr, cube and reciprocal (see start_point).
+bool general_function(const JuliaFractalShape& s) {
+    return s.algebra == JuliaAlgebra::Hypercomplex && s.function != JuliaFunction::Sqr &&
+           s.function != JuliaFunction::Cube && s.function != JuliaFunction::Reciprocal;
 }
 
 double norm2_of(const JuliaFractalShape& s, const glm::dvec4& z) {
-    return s.algebra == JuliaAlgebra::Quaternion ? glm::dot(z, z) : 0.5 * glm::dot(z, z);
-}
-
-Complex square(const Complex& z) {  // without std::complex's inf/nan care
-    return {z.real() * z.real() - z.imag() * z.imag(), 2 * z.real() * z.imag()};
+    return s.algebra == JuliaAlgebra::Quaternion ? glm::dot(z, z)
+                                                 : hypercomplex_norm2(s.function, z);
 }
 
 // One step z <- f(z) + c. For quaternion cubes, z^3 = (x (x^2 - 3d), v (3x^2 - d)).
@@ -58,17 +65,13 @@ glm::dvec4 next_iterate(const JuliaFractalShape& s, const glm::dvec4& z) {
         const double t = 3 * x2 - d;
         return glm::dvec4(z.x * (x2 - 3 * d), t * z.y, t * z.z, t * z.w) + s.c;
     }
-    const Bicomplex p = as_pair(z), c = as_pair(s.c);
-    const Complex e(s.exponent.x, s.exponent.y);
-    if (s.function == JuliaFunction::Sqr) return packed({square(p.a) + c.a, square(p.b) + c.b});
-    return packed({julia_function(s.function, p.a, e) + c.a,
-                   julia_function(s.function, p.b, e) + c.b});
+    return hypercomplex_step(s.function, z, s.c, Complex(s.exponent.x, s.exponent.y));
 }
 
 // POV-Ray's Iteration: inside unless |z|^2 exceeds the exit value before one of the steps;
 // the iterates go to `orbit` (0 .. the escape or max_iteration).
 bool iterate(const JuliaFractalShape& s, const glm::dvec3& p, glm::dvec4* orbit) {
-    glm::dvec4 z = start_point(s, p);
+    glm::dvec4 z = start_point(s, p, general_function(s));
     if (orbit) orbit[0] = z;
     for (int i = 1; i <= s.iterations; ++i) {
         if (norm2_of(s, z) > s.exit_value) return false;
@@ -78,29 +81,43 @@ bool iterate(const JuliaFractalShape& s, const glm::dvec3& p, glm::dvec4* orbit)
     return true;
 }
 
-// Hypercomplex numbers: |z|^2 over its rate of fall along u (from the chain's derivative),
-// used only when that lies between 1 and 30 steps, else the step. Measured against
-// POV-Ray's silhouettes (|z|^2 itself, not its excess over the exit value; the 30 steps).
+// POV-Ray's derivative chain for hypercomplex numbers, the true derivative only for sqr:
+// z_0 g(z_1) ... g(z_N-1) (g: hypercomplex_chain_factor) times chain_scale(N). Its march and
+// normals follow this chain (found by matching POV-Ray's renders of each function).
+double chain_scale(const JuliaFractalShape& s, int n) {  // sqr's 2^N (2 when N = 0)
+    return s.function == JuliaFunction::Sqr ? std::ldexp(1.0, std::max(n, 1)) : 1.0;
+}
+
+// The gradient (halved) of |z_N|^2 with respect to (x, y, z), w held, for the chain D:
+// z_N . D, z_N . D i and z_N . D j.
+glm::dvec3 chain_gradient(const glm::dvec4& zn, const glm::dvec4& D) {
+    return {glm::dot(zn, D), glm::dot(zn, glm::dvec4(-D.y, D.x, -D.w, D.z)),
+            glm::dot(zn, glm::dvec4(-D.z, -D.w, D.x, D.y))};
+}
+
+// Hypercomplex numbers: |z|^2 over its rate of fall along u (from the chain above), used
+// only when that lies between 1 and 30 steps, else the step. Measured against POV-Ray's
+// silhouettes (|z|^2 itself, not its excess over the exit value; the 30 steps).
 bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
-                           double& estimate) {
-    Bicomplex z = as_pair(start_point(s, p));
-    // The slope ignores w's change along the ray (measured, as for the normal).
-    const Bicomplex along = to_bicomplex(glm::dvec4(u, 0));
-    Bicomplex d{Complex(1, 0), Complex(1, 0)};
-    const Bicomplex c = as_pair(s.c);
+                           double& estimate, glm::dvec4* orbit) {
+    glm::dvec4 z = start_point(s, p);
+    orbit[0] = z;
+    glm::dvec4 chain = z;  // z_0 g(z_1) ... g(z_i-2)
     const Complex e(s.exponent.x, s.exponent.y);
     estimate = s.step;
     for (int i = 1; i <= s.iterations; ++i) {
-        const double n2 = norm2(z);
+        const double n2 = norm2_of(s, z);
         if (n2 > s.exit_value) {
-            const Bicomplex dz{d.a * along.a, d.b * along.b};
-            const double slope = -2 * dot(z, dz);  // -d|z|^2/dk
-            if (slope > kJuliaTolerance && n2 > s.step * slope && n2 < 30 * s.step * slope)
+            // The slope ignores w's change along the ray (measured, as for the normal).
+            const double slope =
+                -2 * glm::dot(chain_gradient(z * chain_scale(s, i - 1), chain), u);
+            if (slope > kJuliaSlopeTolerance && n2 > s.step * slope &&
+                n2 < 30 * s.step * slope)
                 estimate = n2 / slope;
             return false;
         }
-        d = {d.a * julia_derivative(s.function, z.a, e), d.b * julia_derivative(s.function, z.b, e)};
-        z = {julia_function(s.function, z.a, e) + c.a, julia_function(s.function, z.b, e) + c.b};
+        if (i >= 2) chain = hypercomplex_product(hypercomplex_chain_factor(s.function, z, e), chain);
+        orbit[i] = z = next_iterate(s, z);
     }
     return true;
 }
@@ -111,10 +128,12 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
 // their squares): both measured, POV-Ray's silhouettes are reproduced pixel for pixel.
 // Inside points give the step.
 bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
-                      double& estimate) {
-    if (s.algebra == JuliaAlgebra::Hypercomplex) return hypercomplex_estimate(s, p, u, estimate);
+                      double& estimate, glm::dvec4* orbit) {
+    if (s.algebra == JuliaAlgebra::Hypercomplex)
+        return hypercomplex_estimate(s, p, u, estimate, orbit);
     const bool cube = s.function == JuliaFunction::Cube;
     glm::dvec4 z = start_point(s, p);
+    orbit[0] = z;
     double d2 = 1;
     for (int i = 1; i <= s.iterations; ++i) {
         const double n2 = glm::dot(z, z);
@@ -124,7 +143,7 @@ bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm
             return false;
         }
         d2 *= cube ? 9 * n2 : 4 * n2;
-        z = next_iterate(s, z);
+        orbit[i] = z = next_iterate(s, z);
     }
     estimate = s.step;
     return true;
@@ -163,20 +182,14 @@ glm::dvec3 orbit_normal(const JuliaFractalShape& s, const glm::dvec4* orbit) {
         const glm::dvec4& zn = orbit[n];
         return {glm::dot(rows[0], zn), glm::dot(rows[1], zn), glm::dot(rows[2], zn)};
     }
-    // Hypercomplex: the chain's derivative is one number D; d z_N = D dh.
+    // Hypercomplex: the chain (see chain_scale) is one number D; d z_N = D dh.
     const Complex e(s.exponent.x, s.exponent.y);
-    glm::dvec4 d(1, 0, 1, 0);
-    for (int i = 0; i < n; ++i) {
-        const Bicomplex z = as_pair(orbit[i]), dd = as_pair(d);
-        d = packed({dd.a * julia_derivative(s.function, z.a, e),
-                    dd.b * julia_derivative(s.function, z.b, e)});
-        rescale(&d, 1);
+    glm::dvec4 D = orbit[0];
+    for (int i = 1; i < n; ++i) {
+        D = hypercomplex_product(hypercomplex_chain_factor(s.function, orbit[i], e), D);
+        rescale(&D, 1);
     }
-    const Bicomplex D = as_pair(d), zn = as_pair(orbit[n]);
-    const Complex i1(0, 1);
-    const double gx = dot(zn, D), gy = dot(zn, {i1 * D.a, i1 * D.b}),
-                 gz = dot(zn, {i1 * D.a, -i1 * D.b});
-    return {gx, gy, gz};
+    return chain_gradient(orbit[n], D);
 }
 
 // The ray's span in the bounding sphere (unit direction u), as POV-Ray clips it.
@@ -218,15 +231,18 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
     // The step is 1/precision in object space whatever the transform (measured: scaling
     // the object changes nothing in POV-Ray's march).
     const double step = s.step;
+    // One iteration stack for the whole search, as POV-Ray's: the normal's orbit keeps the
+    // entries of earlier points past where the last one escaped.
+    Orbit orbit(s.iterations);
     depth = start;
     glm::dvec3 next = o + depth * u;
     double dist = 0, dist_next = 0;
-    bool current_in = iterate_estimate(s, next, u, dist);
+    bool current_in = iterate_estimate(s, next, u, dist, orbit.data());
     if (current_in) {  // starting inside (a shadow or CSG ray): move off the start
         next += 2 * kJuliaTolerance * u;
         depth += 2 * kJuliaTolerance;
         if (depth > depth_max) return false;
-        current_in = iterate_estimate(s, next, u, dist);
+        current_in = iterate_estimate(s, next, u, dist, orbit.data());
     }
     // March: each step at least `step`, until the state changes; `at` trails one step.
     glm::dvec3 at = next;
@@ -237,22 +253,31 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
         if (depth > depth_max) return false;
         at = next;
         next += dist * u;
-        if (iterate_estimate(s, next, u, dist_next) != current_in) break;
+        if (iterate_estimate(s, next, u, dist_next, orbit.data()) != current_in) break;
         dist = dist_next;
     }
     depth -= dist;
     // Bisect the step that crossed: `at` stays on the starting side.
-    Orbit orbit(s.iterations);
+    bool last = !current_in;
     while (dist > kJuliaTolerance) {
         dist *= 0.5;
         const glm::dvec3 mid = at + dist * u;
-        if (iterate(s, mid, orbit.data()) == current_in) {
+        last = iterate(s, mid, orbit.data());
+        if (last == current_in) {
             at = mid;
             depth += dist;
             if (depth > depth_max) return false;
         }
     }
-    if (!current_in) depth += dist;  // entering: report the first point found inside
+    // The normal comes from the orbit of the reported point, iterated again unless the last
+    // test was of that point (as POV-Ray's stack holds it).
+    if (!current_in) {  // entering: report the first point found inside
+        depth += dist;
+        at += dist * u;
+        iterate(s, at, orbit.data());
+    } else if (last != current_in) {
+        iterate(s, at, orbit.data());
+    }
     normal = orbit_normal(s, orbit.data());
     return true;
 }
@@ -263,12 +288,8 @@ JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j) {
     JuliaFractalShape s;
     s.algebra = j.algebra;
     s.function = j.function;
-    // Probed: POV-Ray's hypercomplex `cube` iterates z^2 + c (inside() agrees with `sqr`
-    // at every point tried, and the renders are the same).
-    if (j.algebra == JuliaAlgebra::Hypercomplex && j.function == JuliaFunction::Cube)
-        s.function = JuliaFunction::Sqr;
     const glm::dvec4 c(j.c[0], j.c[1], j.c[2], j.c[3]);
-    s.c = j.algebra == JuliaAlgebra::Quaternion ? c : packed(to_bicomplex(c));
+    s.c = c;
     s.exponent = j.exponent;
     s.iterations = std::max(j.max_iteration, 0);
     s.step = 1 / std::max(j.precision, 1.0);

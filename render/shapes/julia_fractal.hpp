@@ -12,7 +12,7 @@ namespace lumen::render {
 struct JuliaFractalShape {
     scene::JuliaAlgebra algebra = scene::JuliaAlgebra::Quaternion;
     scene::JuliaFunction function = scene::JuliaFunction::Sqr;
-    glm::dvec4 c{1, 0, 0, 0};  // hypercomplex: in pair form (a.re, a.im, b.re, b.im)
+    glm::dvec4 c{1, 0, 0, 0};
     glm::dvec2 exponent{0};    // pwr's complex exponent
     int iterations = 20;
     double step = 0.05;        // 1 / precision
