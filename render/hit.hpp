@@ -35,6 +35,11 @@ struct Hit {
     // densities at `local_point` (the hit in the blob's space); null otherwise.
     const BlobShape* textured_blob = nullptr;
     glm::dvec3 local_point{0};
+    // The normal the slope and aoi patterns see while this hit is shaded: the surface normal
+    // facing the ray until a layer's normal perturbs it, then the last perturbed normal
+    // (POV-Ray keeps one per intersection, so in nested texture_maps an entry shaded later
+    // sees the normal of the one before). Null: the facing surface normal.
+    glm::dvec3* pattern_normal = nullptr;
 };
 
 }  // namespace lumen::render

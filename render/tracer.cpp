@@ -58,6 +58,7 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
 // Single patterned texture whose entries are shaded separately and blended.
 // The hit as the surface patterns (slope, aoi) see it: the normal turned to face the ray.
 SurfacePoint surface_point(const Ray& ray, const Hit& hit) {
+    if (hit.pattern_normal) return {hit.point, *hit.pattern_normal, ray.dir};
     glm::dvec3 n = hit.normal;
     if (glm::dot(n, ray.dir) > 0) n = -n;
     return {hit.point, n, ray.dir};
@@ -144,6 +145,8 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     if (find_hit(ray, ctx.kind, hit)) {
         *depth = hit.t;
         hit.texture = facing_texture(hit, ray.dir);
+        glm::dvec3 pattern_normal = surface_point(ray, hit).normal;
+        hit.pattern_normal = &pattern_normal;
         c = shade(ray, hit, {hit.point, NormalFrame::none()}, here, state);
     } else {
         c = sky(ray.dir);
@@ -192,8 +195,9 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, 
     const double ws[2] = {1 - b.upper_weight, b.upper_weight};
     const int idx[2] = {b.lower, b.upper};
     // Both entries are shaded however small a weight (POV does: a 0.4% entry shows in a dark
-    // pixel's sRGB level); only the rays they spawn obey adc_bailout.
-    for (int k = 0; k < 2; ++k) {
+    // pixel's sRGB level); only the rays they spawn obey adc_bailout. The upper entry first,
+    // as POV-Ray: the lower one's slope patterns see the normal the upper one perturbed.
+    for (int k = 1; k >= 0; --k) {
         const RayColour c = entry(idx[k], ws[k]);
         out.rgb += ws[k] * c.rgb;
         out.transmit += ws[k] * c.transmit;
@@ -283,6 +287,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
                        ? framed_normal(*layer.normal, raw_n, layer.point, at.frame.then(layer.frame))
                        : raw_n;
         if (i == 0) top_normal = s.normal;
+        if (layer.normal && quality >= 8 && hit.pattern_normal) *hit.pattern_normal = s.normal;
         s.raw_normal = raw_n;
         s.object = hit.object;
         s.colour = rgb;
