@@ -105,6 +105,11 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         inner.depth = ctx.depth + 1;
         std::vector<uint32_t> kids;
         Aabb surface, solid = node.kind == NodeKind::Intersection ? Aabb::everything() : Aabb{};
+        // POV-Ray bounds an intersection by the overlap of its members' bounding boxes (the
+        // subtracted ones and height fields left out): a ray that misses it misses the object,
+        // one that meets it finds every crossing. A disc's box is flat though its inside is a
+        // half-space.
+        Aabb overlap = Aabb::everything();
         for (size_t i = 0; i < csg->children.size(); ++i) {
             if (!csg->children[i]) continue;
             inner.invert = csg->op == scene::CsgOp::Difference && i > 0;
@@ -114,8 +119,10 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
             surface.expand(child.surface);
             if (node.kind == NodeKind::Intersection) solid = intersect(solid, child.solid);
             else solid.expand(child.solid);
+            if (!child.inverse && !std::holds_alternative<scene::HeightField>(csg->children[i]->shape))
+                overlap = intersect(overlap, child.surface);
         }
-        if (node.kind == NodeKind::Intersection) surface = intersect(surface, solid);
+        if (node.kind == NodeKind::Intersection) surface = intersect(intersect(surface, solid), overlap);
         if (kids.empty()) solid = surface = Aabb{};
         node.surface = surface;
         node.solid = solid;

@@ -1,4 +1,6 @@
-// Disc: a flat ring (outer radius, optional hole) with no inside.
+// Disc: a flat ring (outer radius, optional hole). Its inside, as POV-Ray's, is the whole
+// half-space behind it (opposite the normal), whatever the radius; CSG still bounds it by the
+// disc's own flat box, as POV-Ray bounds it by its bounding box.
 #pragma once
 #include "render/shapes/shape.hpp"
 
@@ -11,9 +13,11 @@ struct DiscShape {
 };
 DiscShape make_disc(const scene::Disc& d);
 bool intersect(const DiscShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
-inline bool inside(const DiscShape&, const glm::dvec3&) { return false; }  // no inside
+inline bool inside(const DiscShape& s, const glm::dvec3& p) {
+    return s.valid && glm::dot(p - s.centre, s.normal) < 0;
+}
 Aabb bounds(const DiscShape& s);
-inline Aabb solid_bounds(const DiscShape&) { return {}; }
+inline Aabb solid_bounds(const DiscShape&) { return Aabb::everything(); }
 
 template <> struct ShapeTraits<scene::Disc> : PreparedBy<scene::Disc, DiscShape, make_disc> {
     static bool bake(const scene::Disc& d, const scene::Transform& xf, DiscShape& out);

@@ -240,7 +240,10 @@ TEST(Disc, HoleAndRadius) {
     auto h = trace(g, ray({0.7, 0, -1}, {0, 0, 1}));
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->t, 1, 1e-12);
-    EXPECT_FALSE(Geometry::inside(*make(scene::Disc{}), {0, -0.1, 0}));  // no inside
+    // POV-Ray's inside of a disc: the half-space behind it, however far from the rim.
+    EXPECT_TRUE(Geometry::inside(*make(scene::Disc{}), {0, -0.1, 0}));
+    EXPECT_TRUE(Geometry::inside(*make(scene::Disc{}), {50, -0.1, -50}));
+    EXPECT_FALSE(Geometry::inside(*make(scene::Disc{}), {0, 0.1, 0}));
 }
 
 TEST(Triangle, TwoSidedFlatAndSmooth) {
