@@ -104,12 +104,13 @@ struct Tessellation {
         for (int k = 0; k < 4; ++k) {
             mesh.vertices.push_back(c[k]);
             mesh.normals.push_back(patch_normal(patch, uv[k].x, uv[k].y));
+            mesh.uvs.push_back(uv[k]);
         }
         for (const std::array<int, 3>& t : {std::array<int, 3>{0, 1, 2}, std::array<int, 3>{0, 2, 3}}) {
             const glm::dvec3 b0 = c[t[1]] - c[t[0]], b1 = c[t[2]] - c[t[0]], n = glm::cross(b0, b1);
             if (glm::dot(n, n) <= 1e-10 * glm::dot(b0, b0) * glm::dot(b1, b1)) continue;
             scene::Mesh::Face f;
-            for (int k = 0; k < 3; ++k) f.v[k] = f.n[k] = base + t[k];
+            for (int k = 0; k < 3; ++k) f.v[k] = f.n[k] = f.uv[k] = base + t[k];
             mesh.faces.push_back(f);
         }
     }
@@ -147,6 +148,8 @@ scene::ObjectPtr build_bicubic_patch(ItemCursor& cur) {
     std::optional<int> type;
     double flatness = 0;
     int steps[2] = {0, 0};
+    // Texture corners s0..s3 at P0, P3, P15, P12 (POV-Ray's defaults).
+    std::vector<glm::dvec2> corners = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     auto read_steps = [&](int k, const char* word) {
         const SourceLoc loc = cur.here();
         const double n = cur.expect_float(word);
@@ -176,8 +179,7 @@ scene::ObjectPtr build_bicubic_patch(ItemCursor& cur) {
         else if (cur.accept_keyword("v_steps")) read_steps(1, "v_steps");
         else if (cur.accept_keyword("accuracy")) cur.expect_float("accuracy");  // unused by POV
         else if (cur.accept_keyword("uv_vectors")) {
-            // The texture corners only matter to uv_mapping (not yet supported).
-            for (int k = 0; k < 4; ++k) cur.expect_vecn("uv_vectors");
+            for (glm::dvec2& s : corners) s = read_vector2(cur, "uv_vectors");
         } else break;
     }
     if (!type) cur.fail(cur.block_loc(), "bicubic_patch needs its type (type 0 or type 1)");
@@ -188,6 +190,7 @@ scene::ObjectPtr build_bicubic_patch(ItemCursor& cur) {
     scene::Object obj;
     obj.loc = cur.block_loc();
     scene::Mesh& mesh = obj.shape.emplace<scene::Mesh>();
+    mesh.patch_corners = corners;
     read_object_modifiers(cur, obj, [](const Item&) { return false; }, {});
     Tessellation{net, flatness, steps[0], steps[1], obj.transform, mesh}.node(net, 0, 1, 0, 1, 0);
     return std::make_shared<scene::Object>(std::move(obj));

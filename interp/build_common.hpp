@@ -25,11 +25,19 @@ scene::Transform build_transform_block(ItemCursor& cur);
 // Patterns move with everything written after them: a transform appends to the pattern's
 // steps. Map entries are not transformed: a pigment's and a texture's entries are evaluated at
 // their parent's pattern point (as POV-Ray does), and a normal's normal_map entries live in its
-// pattern space.
+// pattern space. A uv_mapping pigment, normal or texture is left as it is (POV-Ray: transforms
+// written outside it never move it); its own transforms act in uv space.
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const scene::Transform& t);
 scene::NormalPtr transformed(const scene::NormalPtr& n, const scene::Transform& t);
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const scene::Transform& t);
 scene::LayeredTexture transformed(const scene::LayeredTexture& layers, const scene::Transform& t);
+// A transform written inside the texture's own block: it moves the texture even under
+// uv_mapping (in uv space), and its pigment and normal unless they are uv-mapped themselves.
+void transform_own(scene::Texture& tex, const scene::Transform& t);
+
+// A 2-vector `<a, b>` (a float stands for both): julia's constant, the uv_vectors of meshes
+// and patches (build_mesh.cpp).
+glm::dvec2 read_vector2(ItemCursor& cur, const std::string& after);
 
 // ---- patterns (build_pattern.cpp) -----------------------------------------------------------
 // If `kw` (already consumed) is a pattern type or pattern modifier, reads its arguments into
@@ -51,6 +59,9 @@ struct ObjectEntries {
     ItemCursor entries;
 };
 const std::vector<std::string>& pattern_keywords();
+// `uv_mapping` at the start of a pigment, normal or texture block (after its identifier, if
+// any; POV-Ray refuses it anywhere later, which read_pattern_keyword reports).
+void read_leading_uv_mapping(ItemCursor& cur, scene::Pattern& pattern);
 void mark_unsupported(scene::Pattern& pattern, const std::string& feature, SourceLoc loc);
 // The arguments after a pattern keyword (`gradient <v>`, `mandel 25`), read into its kind
 // (build_pattern_kinds.cpp).

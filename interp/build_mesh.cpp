@@ -42,6 +42,28 @@ void check_range(ItemCursor& cur, const std::array<int, 3>& idx, size_t size, co
                               " out of range (there are " + std::to_string(size) + ")");
 }
 
+// mesh2's uv indices per face (POV-Ray 3.7): uv_indices when given (one triple per face);
+// without them, uv_vectors indexed like the vertices, or one uv for every corner. Any other
+// uv count is refused, as POV-Ray refuses it.
+void index_uvs(ItemCursor& cur, scene::Mesh& mesh, const std::vector<std::array<int, 3>>* uv_indices,
+               const std::vector<SourceLoc>& face_locs) {
+    if (uv_indices) {
+        if (uv_indices->size() != mesh.faces.size())
+            cur.fail(cur.block_loc(), "uv_indices count differs from face_indices count");
+        for (size_t i = 0; i < mesh.faces.size(); ++i) {
+            check_range(cur, (*uv_indices)[i], mesh.uvs.size(), "uv", face_locs[i]);
+            mesh.faces[i].uv = (*uv_indices)[i];
+        }
+        return;
+    }
+    if (mesh.uvs.empty()) return;
+    if (mesh.uvs.size() != 1 && mesh.uvs.size() != mesh.vertices.size())
+        cur.fail(cur.block_loc(), "mesh2 needs uv_indices: its uv_vectors count (" +
+                                      std::to_string(mesh.uvs.size()) +
+                                      ") is neither 1 nor the vertex count");
+    for (scene::Mesh::Face& f : mesh.faces) f.uv = mesh.uvs.size() == 1 ? std::array<int, 3>{} : f.v;
+}
+
 bool read_inside_vector(ItemCursor& cur, const Item& item, scene::Mesh& mesh) {
     if (item.kind != Item::Kind::Keyword || item.keyword != "inside_vector") return false;
     mesh.inside_vector = cur.expect_vector("inside_vector");
@@ -49,6 +71,13 @@ bool read_inside_vector(ItemCursor& cur, const Item& item, scene::Mesh& mesh) {
 }
 
 }  // namespace
+
+glm::dvec2 read_vector2(ItemCursor& cur, const std::string& after) {
+    const std::vector<double> v = cur.expect_vecn(after);
+    if (v.size() == 1) return {v[0], v[0]};
+    if (v.size() != 2) cur.fail(cur.here(), "'" + after + "' takes a 2-component vector");
+    return {v[0], v[1]};
+}
 
 scene::ObjectPtr build_mesh(ItemCursor& cur) {
     // `mesh { Mesh_Ident modifiers }` copies a declared mesh (mesh_camera scenes do).
@@ -69,7 +98,8 @@ scene::ObjectPtr build_mesh(ItemCursor& cur) {
         int base = int(mesh.vertices.size());
         for (int i = 0; i < 3; ++i) {
             mesh.vertices.push_back(tri->p[i]);
-            face.v[i] = base + i;
+            mesh.uvs.push_back(tri->uv[i]);
+            face.v[i] = face.uv[i] = base + i;
             if (tri->smooth) {
                 face.n[i] = int(mesh.normals.size());
                 mesh.normals.push_back(tri->n[i]);
@@ -92,9 +122,9 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
     obj.loc = cur.block_loc();
     // Filled in place, so transforms met among the items also move per-triangle textures.
     scene::Mesh& mesh = obj.shape.emplace<scene::Mesh>();
-    std::vector<std::array<int, 3>> normal_indices;
+    std::vector<std::array<int, 3>> normal_indices, uv_indices;
     std::vector<SourceLoc> face_locs;
-    bool have_normal_indices = false;
+    bool have_normal_indices = false, have_uv_indices = false;
     BuildContext& ctx = cur.ctx();
     auto extra = [&](const Item& item) {
         if (read_inside_vector(cur, item, mesh)) return true;
@@ -106,10 +136,8 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
         } else if (k == "normal_vectors") {
             read_counted(ctx, *b, [&](ItemCursor& c) { mesh.normals.push_back(c.expect_vector("")); });
         } else if (k == "uv_vectors") {
-            read_counted(ctx, *b, [&](ItemCursor& c) {
-                glm::dvec3 v = c.expect_vector("");
-                mesh.uvs.push_back({v.x, v.y});
-            });
+            read_counted(ctx, *b,
+                         [&](ItemCursor& c) { mesh.uvs.push_back(read_vector2(c, "uv_vectors")); });
         } else if (k == "texture_list") {
             read_counted(ctx, *b, [&](ItemCursor& c) {
                 mesh.textures.push_back(
@@ -132,7 +160,10 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
         } else if (k == "normal_indices") {
             have_normal_indices = true;
             read_counted(ctx, *b, [&](ItemCursor& c) { normal_indices.push_back(index_triple(c)); });
-        } else if (k != "uv_indices") {  // uv indices only matter for uv_mapping
+        } else if (k == "uv_indices") {
+            have_uv_indices = true;
+            read_counted(ctx, *b, [&](ItemCursor& c) { uv_indices.push_back(index_triple(c)); });
+        } else {
             return false;
         }
         return true;
@@ -152,6 +183,7 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
         else if (!mesh.normals.empty()) f.n = f.v;
         check_range(cur, f.n, mesh.normals.size(), "normal", face_locs[i]);
     }
+    index_uvs(cur, mesh, have_uv_indices ? &uv_indices : nullptr, face_locs);
     return std::make_shared<scene::Object>(std::move(obj));
 }
 

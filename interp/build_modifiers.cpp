@@ -42,12 +42,30 @@ void transform_attachments(scene::Object& obj, const scene::Transform& t) {
     }
 }
 
+// Layers given after an object's `uv_mapping` are uv-mapped: evaluated at the hit's (u, v, 0)
+// and out of reach of the object's transforms (POV-Ray).
+scene::LayeredTexture uv_mapped(const scene::Object& obj, const scene::LayeredTexture& layers) {
+    if (!obj.uv_mapping) return layers;
+    scene::LayeredTexture out;
+    for (const scene::TexturePtr& l : layers) {
+        if (!l || l->pattern.uv_mapping) {
+            out.push_back(l);
+            continue;
+        }
+        auto copy = std::make_shared<scene::Texture>(*l);
+        copy->pattern.uv_mapping = true;
+        out.push_back(copy);
+    }
+    return out;
+}
+
 // Applies `change` to the object's top texture layer (POV: `pigment {}` written directly on
 // an object modifies its texture, creating one from the defaults if needed).
 template <class Change>
 void change_top_texture(ItemCursor& cur, const Item& item, scene::Object& obj,
                         const Change& change) {
-    if (obj.texture.empty()) obj.texture.push_back(default_texture(cur.ctx(), item.loc));
+    if (obj.texture.empty())
+        obj.texture = uv_mapped(obj, {default_texture(cur.ctx(), item.loc)});
     auto top = std::make_shared<scene::Texture>(*obj.texture.back());
     if (!top->pattern.is_plain())
         cur.fail(item.loc, "cannot add " + describe_item(item) + " to a patterned texture");
@@ -80,7 +98,7 @@ std::vector<scene::ObjectPtr> read_bound_objects(ItemCursor& cur, const BlockVal
 bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
     const Value& v = item.value;
     if (v.is<std::shared_ptr<const TextureValue>>()) {
-        const auto& layers = v.as<std::shared_ptr<const TextureValue>>()->layers;
+        const auto layers = uv_mapped(obj, v.as<std::shared_ptr<const TextureValue>>()->layers);
         obj.texture.insert(obj.texture.end(), layers.begin(), layers.end());
     } else if (v.is<scene::PigmentPtr>()) {
         change_top_texture(cur, item, obj,
@@ -97,16 +115,16 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
         obj.interior = *v.as<std::shared_ptr<const scene::Interior>>();
     } else if (v.is<std::shared_ptr<const MaterialValue>>()) {
         const MaterialValue& m = *v.as<std::shared_ptr<const MaterialValue>>();
-        obj.texture.insert(obj.texture.end(), m.texture.begin(), m.texture.end());
-        obj.interior_texture.insert(obj.interior_texture.end(), m.interior_texture.begin(),
-                                    m.interior_texture.end());
+        const auto texture = uv_mapped(obj, m.texture), inner = uv_mapped(obj, m.interior_texture);
+        obj.texture.insert(obj.texture.end(), texture.begin(), texture.end());
+        obj.interior_texture.insert(obj.interior_texture.end(), inner.begin(), inner.end());
         if (m.interior) obj.interior = m.interior;
     } else if (v.is<scene::Unsupported>()) {  // photons { }, ...
         obj.unsupported.push_back(v.as<scene::Unsupported>());
     } else if (const BlockValue* b = block_of(item)) {
         if (b->keyword == "interior_texture") {
             ItemCursor sub(cur.ctx(), *b);
-            scene::LayeredTexture layers = build_texture(sub);
+            scene::LayeredTexture layers = uv_mapped(obj, build_texture(sub));
             obj.interior_texture.insert(obj.interior_texture.end(), layers.begin(), layers.end());
         } else if (b->keyword == "clipped_by") {
             // Several clipped_by blocks all clip (POV keeps every one).
@@ -153,7 +171,11 @@ bool apply_object_modifier(ItemCursor& cur, const Item& item, scene::Object& obj
     else if (w == "double_illuminate") obj.double_illuminate = cur.optional_bool();
     else if (w == "no_radiosity") obj.no_radiosity = cur.optional_bool();
     else if (w == "split_union") cur.optional_bool();  // a speed hint only
-    else if (w == "cutaway_textures" || w == "uv_mapping")
+    else if (w == "uv_mapping") {
+        if (!obj.texture.empty())  // as POV-Ray refuses it
+            cur.fail(item.loc, "uv_mapping must be specified before the texture");
+        obj.uv_mapping = true;
+    } else if (w == "cutaway_textures")
         obj.unsupported.push_back({w, item.loc});
     else if (w == "texture" || w == "pigment" || w == "finish" || w == "normal" ||
              w == "interior" || w == "material") {

@@ -35,6 +35,12 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
     else if (base) n = *base;
     else if (cur.ctx().default_normal) n = *cur.ctx().default_normal;
     n.loc = cur.block_loc();
+    read_leading_uv_mapping(cur, n.pattern);
+    if (n.pattern.uv_mapping && cur.next_is<scene::NormalPtr>()) {  // `uv_mapping N ...`
+        n = *cur.next().value.as<scene::NormalPtr>();
+        n.pattern.uv_mapping = true;
+        n.loc = cur.block_loc();
+    }
     while (!cur.at_end()) {
         const Item& item = cur.next();
         // List entries: `checker normal{A} normal{B}`, valued 0, 1, ...

@@ -148,13 +148,16 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Triangle>, ItemCursor&
         glm::dvec3 n = cur.expect_vector("");
         t.n[i] = glm::length(n) > 0 ? glm::normalize(n) : n;
     }
-    // Mesh triangles may carry `uv_vectors <u,v> <u,v> <u,v>`: only uv_mapping uses them.
+    // Mesh triangles may carry `uv_vectors <u,v> <u,v> <u,v>` (default all 0, as in POV-Ray).
+    std::array<glm::dvec2, 3> uvs{};
     auto uv = [&](const Item& item) {
         if (item.kind != Item::Kind::Keyword || item.keyword != "uv_vectors") return false;
-        for (int i = 0; i < 3; ++i) cur.expect_vecn("uv_vectors");
+        for (glm::dvec2& each : uvs) each = read_vector2(cur, "uv_vectors");
         return true;
     };
-    return share(object_of(cur, t, uv, {"uv_vectors"}));
+    scene::Object obj = object_of(cur, t, uv, {"uv_vectors"});
+    std::get<scene::Triangle>(obj.shape).uv = uvs;
+    return share(std::move(obj));
 }
 
 scene::ObjectPtr read_primitive(std::type_identity<scene::Polygon>, ItemCursor& cur) {

@@ -67,7 +67,8 @@ bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patter
         if (g < 0 || g > 3) cur.fail(kw.loc, "noise_generator must be 0, 1, 2 or 3");
         pattern.noise_generator = g;
     } else if (w == "uv_mapping") {
-        mark_unsupported(pattern, "uv_mapping", kw.loc);
+        cur.fail(kw.loc, "uv_mapping must come first in its block (after an identifier)",
+                 "POV-Ray reads it only there");
     } else {
         return false;
     }
@@ -75,6 +76,10 @@ bool read_common_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patter
 }
 
 }  // namespace
+
+void read_leading_uv_mapping(ItemCursor& cur, scene::Pattern& pattern) {
+    while (cur.accept_keyword("uv_mapping")) pattern.uv_mapping = true;
+}
 
 void mark_unsupported(scene::Pattern& pattern, const std::string& feature, SourceLoc loc) {
     if (!pattern.unsupported) pattern.unsupported = scene::Unsupported{feature, loc};

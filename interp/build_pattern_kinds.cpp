@@ -50,13 +50,6 @@ void read_raw_arguments(ItemCursor& cur, pattern::Arguments& args) {
     }
 }
 
-// `julia <cr, ci>`: a 2-vector (a float stands for both components).
-glm::dvec2 read_uv(ItemCursor& cur, const std::string& w) {
-    const std::vector<double> v = cur.expect_vecn(w);
-    if (v.size() == 1) return {v[0], v[0]};
-    if (v.size() != 2) cur.fail(cur.here(), "'" + w + "' takes a 2-component vector");
-    return {v[0], v[1]};
-}
 
 // `magnet 1|2 mandel N` or `magnet 1|2 julia <c>, N`.
 void read_magnet(ItemCursor& cur, const Item& kw, pattern::Magnet& m) {
@@ -64,7 +57,7 @@ void read_magnet(ItemCursor& cur, const Item& kw, pattern::Magnet& m) {
     if (m.type != 1 && m.type != 2) cur.fail(kw.loc, "magnet type must be 1 or 2");
     if (cur.accept_keyword("julia")) {
         m.julia = true;
-        m.c = read_uv(cur, "julia");
+        m.c = read_vector2(cur, "julia");
     } else if (!cur.accept_keyword("mandel")) {
         cur.fail_expected("'mandel' or 'julia'", kw.keyword);
     }
@@ -236,7 +229,7 @@ void read_pattern_arguments(ItemCursor& cur, const Item& kw, scene::Pattern& pat
                           [&](pattern::Spiral& s) { s.arms = cur.expect_int(kw.keyword); },
                           [&](pattern::Mandel& m) { m.iterations = cur.expect_int(kw.keyword); },
                           [&](pattern::Julia& j) {
-                              j.c = read_uv(cur, kw.keyword);
+                              j.c = read_vector2(cur, kw.keyword);
                               j.iterations = cur.expect_int(kw.keyword);
                           },
                           [&](pattern::Magnet& m) { read_magnet(cur, kw, m); },

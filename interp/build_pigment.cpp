@@ -57,6 +57,12 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
     else if (base) p = *base;
     else if (cur.ctx().default_pigment) p = *cur.ctx().default_pigment;
     p.loc = cur.block_loc();
+    read_leading_uv_mapping(cur, p.pattern);
+    if (p.pattern.uv_mapping && cur.next_is<scene::PigmentPtr>()) {  // `uv_mapping P ...`
+        p = *cur.next().value.as<scene::PigmentPtr>();
+        p.pattern.uv_mapping = true;
+        p.loc = cur.block_loc();
+    }
     while (!cur.at_end()) {
         if (cur.next_is_colour_start()) {
             p.pattern.kind = scene::pattern::Plain{};
@@ -65,8 +71,8 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
         }
         const Item& item = cur.next();
         scene::Transform t;
-        if (read_transform(cur, item, t)) {  // moves pigment_map entries too
-            p = *transformed(std::make_shared<scene::Pigment>(p), t);
+        if (read_transform(cur, item, t)) {  // in uv space under uv_mapping
+            p.pattern.steps.add_transform(t);
             continue;
         }
         if (item.kind == Item::Kind::Value) {

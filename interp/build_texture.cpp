@@ -61,12 +61,13 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
         }
     }
     top.loc = cur.block_loc();
+    read_leading_uv_mapping(cur, top.pattern);
     while (!cur.at_end()) {
         const Item& item = cur.next();
         scene::Transform t;
         if (read_transform(cur, item, t)) {
             below = transformed(below, t);
-            top = *transformed(std::make_shared<scene::Texture>(top), t);
+            transform_own(top, t);
             continue;
         }
         scene::FinishPtr finish;

@@ -126,7 +126,7 @@ Transform build_transform_block(ItemCursor& cur) {
 // Not the pigment_map entries: they are evaluated at the pigment's pattern point, so they
 // already move with it (render/pigment.cpp).
 scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
-    if (!p) return p;
+    if (!p || p->pattern.uv_mapping) return p;
     auto copy = std::make_shared<scene::Pigment>(*p);
     copy->pattern.steps.add_transform(t);
     return copy;
@@ -135,7 +135,7 @@ scene::PigmentPtr transformed(const scene::PigmentPtr& p, const Transform& t) {
 // The normal_map entries are evaluated in this normal's pattern space (scene::Normal): they
 // move with it without a copy of the transform.
 scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
-    if (!n) return n;
+    if (!n || n->pattern.uv_mapping) return n;
     auto copy = std::make_shared<scene::Normal>(*n);
     copy->pattern.steps.add_transform(t);
     return copy;
@@ -144,12 +144,16 @@ scene::NormalPtr transformed(const scene::NormalPtr& n, const Transform& t) {
 // Nor the texture_map entries: they are evaluated at the texture's pattern point
 // (render/texture_layers.cpp, render/tracer.cpp).
 scene::TexturePtr transformed(const scene::TexturePtr& tex, const Transform& t) {
-    if (!tex) return tex;
+    if (!tex || tex->pattern.uv_mapping) return tex;
     auto copy = std::make_shared<scene::Texture>(*tex);
-    copy->pigment = transformed(copy->pigment, t);
-    copy->normal = transformed(copy->normal, t);
-    copy->pattern.steps.add_transform(t);
+    transform_own(*copy, t);
     return copy;
+}
+
+void transform_own(scene::Texture& tex, const Transform& t) {
+    tex.pigment = transformed(tex.pigment, t);
+    tex.normal = transformed(tex.normal, t);
+    tex.pattern.steps.add_transform(t);
 }
 
 scene::LayeredTexture transformed(const scene::LayeredTexture& layers, const Transform& t) {

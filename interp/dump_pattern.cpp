@@ -101,6 +101,7 @@ Json pattern(const scene::Pattern& p) {
     put_if(o, "wave_exponent", p.wave_exponent, d.wave_exponent);
     if (const scene::TurbulenceParams* t = p.steps.classic_turbulence()) put_fields(o, *t);
     put_if(o, "noise_generator", double(p.noise_generator), double(d.noise_generator));
+    put_if(o, "uv_mapping", p.uv_mapping, d.uv_mapping);
     if (!p.is_plain()) {  // a plain pigment's transforms are unused
         if (p.steps.has_warps()) o.put("steps", steps(p.steps));
         else put_transform(o, p.steps.composed_transform());

@@ -14,6 +14,7 @@
 #include "render/bvh.hpp"
 #include "render/node.hpp"
 #include "render/shadows.hpp"
+#include "render/surface_uv.hpp"
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -106,7 +107,11 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
     double len = glm::length(n);
     n = len > 0 && std::isfinite(len) ? n / len : glm::dvec3(0, 1, 0);
     hit.normal = leaf.flip ? -n : n;
-    hit.uv = best.shape.uv;
+    if (leaf.needs_uv) {
+        const glm::dvec3 local =
+            leaf.identity ? hit.point : store.transforms[leaf.xf].inv_point(hit.point);
+        hit.uv = surface_uv(store.shapes[leaf.shape], local, hit.point, best.shape);
+    }
     hit.object = leaf.object;
     hit.texture = best.shape.texture ? best.shape.texture : leaf.texture;
     hit.interior_texture = leaf.interior_texture;

@@ -242,8 +242,18 @@ TEST(GeometryMesh, SmoothNormalsAndUv) {
     scene::Mesh::Face f;
     f.v = {0, 1, 2};
     f.n = {0, 1, 2};
+    f.uv = {0, 1, 2};
     m.faces = {f};
-    Geometry g(scene_of({make(m)}));
+    // The uv is worked out only for a texture under uv_mapping.
+    auto mesh = make(m);
+    Geometry plain(scene_of({mesh}));
+    auto p = trace(plain, ray({0.25, 0.5, -1}, {0, 0, 1}));
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->uv, glm::dvec2(0));
+    auto texture = std::make_shared<scene::Texture>();
+    texture->pattern.uv_mapping = true;
+    mesh->texture = {texture};
+    Geometry g(scene_of({mesh}));
     auto h = trace(g, ray({0.25, 0.5, -1}, {0, 0, 1}));
     ASSERT_TRUE(h);
     EXPECT_NEAR(glm::length(h->normal), 1, 1e-12);

@@ -15,7 +15,8 @@ struct Hit {
     glm::dvec3 normal{0, 1, 0};   // world-space unit normal, outward (already flipped for
                                   // `inverse`), NOT yet flipped to face the ray; smooth
                                   // triangles give the interpolated normal
-    glm::dvec2 uv{0};             // mesh uv where available
+    glm::dvec2 uv{0};             // the surface's (u, v) (render/surface_uv.hpp), set only
+                                  // when the texture uses uv_mapping
     const scene::Object* object = nullptr;  // the primitive that was hit (flags, interior)
     // The texture to shade with after CSG inheritance: the primitive's own, else the nearest
     // CSG ancestor's; null means the default texture. For meshes, the triangle's texture.

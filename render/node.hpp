@@ -25,6 +25,7 @@ struct Node {
     bool no_shadow = false;  // own or inherited from a CSG ancestor
     bool no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;  // likewise (reported in Hit)
+    bool needs_uv = false;   // its texture uses uv_mapping: hits get their (u, v); not baked
     double min_depth = kDepthDefault;
     uint32_t xf = 0;         // NodeStore::transforms: object -> world (when !identity)
     Aabb surface;            // world box of the points a hit can be at

@@ -4,6 +4,7 @@
 
 #include "base/diagnostics.hpp"
 #include "render/node.hpp"
+#include "render/texture_layers.hpp"
 
 namespace lumen::render {
 
@@ -41,6 +42,19 @@ void pass_flags(NodeContext& to, const Node& from) {
     to.double_illuminate = from.double_illuminate;
     to.no_radiosity = from.no_radiosity;
     to.hollow = from.hollow;
+}
+
+// Whether a hit on the primitive is shaded with a uv_mapping texture: its own or inherited
+// textures, or a mesh's or blob's per-part ones.
+bool shades_with_uv(const scene::Object& object, const Node& node) {
+    if (uses_uv_mapping(node.texture) || uses_uv_mapping(node.interior_texture)) return true;
+    if (const auto* mesh = std::get_if<scene::Mesh>(&object.shape))
+        for (const auto& t : mesh->textures)
+            if (uses_uv_mapping(&t)) return true;
+    if (const auto* blob = std::get_if<scene::Blob>(&object.shape))
+        for (const auto& c : blob->components)
+            if (uses_uv_mapping(&c.texture)) return true;
+    return false;
 }
 
 uint32_t append_links(NodeStore& store, const std::vector<uint32_t>& items) {
@@ -131,9 +145,11 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     } else {
         ShapeData data;
         bool finite = transform_is_finite(world);
+        // uv is measured in the shape's own space: a baked shape has lost it.
+        node.needs_uv = shades_with_uv(object, node);
         if (world.is_identity()) {
             prepare_shape(object.shape, accelerate, data);
-        } else if (!finite || !bake_transform(object.shape, world, data)) {
+        } else if (!finite || node.needs_uv || !bake_transform(object.shape, world, data)) {
             prepare_shape(object.shape, accelerate, data);
             node.identity = false;
             node.xf = uint32_t(store.transforms.size());

@@ -1,5 +1,6 @@
 // Pattern evaluation and blend-map lookup.
 #pragma once
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "scene/pattern.hpp"
@@ -10,11 +11,22 @@ using scene::blend_weights;
 using scene::BlendWeights;
 
 // Where on a surface a pattern is evaluated, for the patterns that depend on more than the
-// point (slope, aoi): the world hit point, the shading normal turned to face the ray, and the
-// ray's direction. Null where there is no surface (the sky, shadow filters): they give 0.
+// point: slope and aoi see the world hit point, the shading normal turned to face the ray, and
+// the ray's direction (null, or not `oriented` as for shadow filters: they give 0);
+// uv_mapping patterns see the hit's (u, v) (render/surface_uv.hpp).
 struct SurfacePoint {
     glm::dvec3 point, normal, direction;
+    glm::dvec2 uv{0};
+    bool oriented = true;
 };
+
+// The point a pattern starts from: p, or (u, v, 0) of the surface under uv_mapping (POV-Ray
+// ignores the hit point then; without a surface there is no uv and it takes the origin).
+inline glm::dvec3 source_point(const scene::Pattern& pattern, const glm::dvec3& p,
+                               const SurfacePoint* surface) {
+    if (!pattern.uv_mapping) return p;
+    return surface ? glm::dvec3(surface->uv, 0) : glm::dvec3(0);
+}
 
 // Discrete (block) patterns give an index, skip frequency/phase/waves and pick map entries by
 // index: checker 0..1, brick 0..1 (mortar, brick), hexagon 0..2, square 0..3, triangular 0..5.

@@ -34,7 +34,8 @@ scene::Colour evaluate_pigment(const scene::Pigment* pigment, const glm::dvec3& 
                                const SurfacePoint* surface) {
     if (!pigment) return {};
     if (pigment->pattern.is_plain()) return pigment->colour;
-    const glm::dvec3 tp = pattern_point(pigment->pattern, p);
+    const glm::dvec3 tp =
+        pattern_point(pigment->pattern, source_point(pigment->pattern, p, surface));
     if (std::holds_alternative<scene::pattern::Average>(pigment->pattern.kind))
         return average_colour(pigment->pigment_map, tp, surface);
     const double v = pattern_value_at(pigment->pattern, tp, surface);

@@ -19,6 +19,14 @@ bool fades(const scene::Interior& in, bool shadow_ray) {
     return !(std::fabs(in.fade_distance) <= 1e-10) && !(shadow_ray && in.fade_power <= 0);
 }
 
+// A shadow ray's view of a surface: its uv for uv_mapping, no orientation (slope and aoi give
+// 0 in shadows).
+SurfacePoint uv_surface(const Hit& hit) {
+    SurfacePoint s{hit.point, hit.normal, glm::dvec3(0), hit.uv};
+    s.oriented = false;
+    return s;
+}
+
 // The normal fake caustics focus the light with: the surface's own, facing the shadow ray,
 // perturbed by the normal of the top texture layer (POV's caustics come from a surface's bumps).
 glm::dvec3 caustic_normal(const Hit& hit, const glm::dvec3& dir) {
@@ -26,7 +34,8 @@ glm::dvec3 caustic_normal(const Hit& hit, const glm::dvec3& dir) {
     if (glm::dot(n, dir) > 0) n = -n;
     const scene::LayeredTexture* layers = facing_texture(hit, dir);
     if (!layers || layers->empty() || !layers->back()) return n;
-    const ResolvedLayer top = resolve_layer(*layers->back(), hit.point);
+    const SurfacePoint uv_only = uv_surface(hit);
+    const ResolvedLayer top = resolve_layer(*layers->back(), hit.point, &uv_only);
     return top.normal ? framed_normal(*top.normal, n, top.point, top.frame) : n;
 }
 
@@ -73,7 +82,8 @@ public:
             gave_up_ = true;
             return false;
         }
-        filter_ *= surface_filter(facing_texture(hit, dir_), hit.point);
+        const SurfacePoint uv_only = uv_surface(hit);
+        filter_ *= surface_filter(facing_texture(hit, dir_), hit.point, &uv_only);
         if (is_black(filter_)) {
             filter_ = glm::dvec3(0);
             return false;

@@ -66,12 +66,14 @@ ResolvedLayer resolve_blend(const scene::Texture& texture, const glm::dvec3& tp,
 
 }  // namespace
 
-ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& p,
+ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& world_point,
                             const SurfacePoint* surface) {
+    const glm::dvec3 p = source_point(texture.pattern, world_point, surface);
     if (texture.pattern.is_plain() || texture.texture_map.empty()) {
+        const scene::Normal* normal = texture.normal.get();
         return {evaluate_pigment(texture.pigment.get(), p, surface),
-                texture.finish ? texture.finish.get() : &default_finish(), texture.normal.get(), p,
-                NormalFrame::none()};
+                texture.finish ? texture.finish.get() : &default_finish(), normal,
+                normal ? source_point(normal->pattern, p, surface) : p, NormalFrame::none()};
     }
     // The entries are evaluated at this pattern's point, their normals in its frame.
     const glm::dvec3 tp = pattern_point(texture.pattern, p);
@@ -94,12 +96,13 @@ void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
                     : plain_layer(scene::Colour{}, p));
 }
 
-glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p) {
+glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p,
+                          const SurfacePoint* surface) {
     if (!layers || layers->empty()) return glm::dvec3(0);
     glm::dvec3 filter(1);
     for (const scene::TexturePtr& t : *layers) {
         if (!t) return glm::dvec3(0);
-        filter *= layer_filter(resolve_layer(*t, p).colour);
+        filter *= layer_filter(resolve_layer(*t, p, surface).colour);
         if (filter.x == 0 && filter.y == 0 && filter.z == 0) break;
     }
     return filter;
@@ -136,6 +139,43 @@ bool may_pass_light(const scene::LayeredTexture* layers) {
     for (const scene::TexturePtr& t : *layers)
         if (!t || !texture_may_pass(*t)) return false;  // one opaque layer stops it all
     return true;
+}
+
+namespace {
+
+bool pigment_uses_uv(const scene::Pigment* p) {
+    if (!p) return false;
+    if (p->pattern.uv_mapping) return true;
+    if (const auto* k = std::get_if<scene::pattern::PigmentPattern>(&p->pattern.kind))
+        if (pigment_uses_uv(k->pigment.get())) return true;
+    for (const auto& e : p->pigment_map)
+        if (pigment_uses_uv(e.item.get())) return true;
+    return false;
+}
+
+bool normal_uses_uv(const scene::Normal* n) {
+    if (!n) return false;
+    if (n->pattern.uv_mapping) return true;
+    for (const auto& e : n->normal_map)
+        if (normal_uses_uv(e.item.get())) return true;
+    return false;
+}
+
+bool texture_uses_uv(const scene::Texture& t) {
+    if (t.pattern.uv_mapping || pigment_uses_uv(t.pigment.get()) || normal_uses_uv(t.normal.get()))
+        return true;
+    for (const auto& e : t.texture_map)
+        if (uses_uv_mapping(&e.item)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool uses_uv_mapping(const scene::LayeredTexture* layers) {
+    if (!layers) return false;
+    for (const scene::TexturePtr& t : *layers)
+        if (t && texture_uses_uv(*t)) return true;
+    return false;
 }
 
 bool passes_all_light(const scene::LayeredTexture* layers) {

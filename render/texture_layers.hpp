@@ -66,7 +66,12 @@ void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p, Re
                     const SurfacePoint* surface = nullptr);
 
 // Product over layers of (rgb·filter + transmit): the light a surface lets through.
-glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p);
+glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p,
+                          const SurfacePoint* surface = nullptr);
+
+// Whether any pattern of the layers (their pigments, normals, maps and entries) is under
+// uv_mapping: only then does a hit need its (u, v).
+bool uses_uv_mapping(const scene::LayeredTexture* layers);
 
 // False when surface_filter is 0 at every point (no colour the texture can take has filter
 // or transmit); true when it may let light through somewhere.

@@ -61,7 +61,7 @@ SurfacePoint surface_point(const Ray& ray, const Hit& hit) {
     if (hit.pattern_normal) return {hit.point, *hit.pattern_normal, ray.dir};
     glm::dvec3 n = hit.normal;
     if (glm::dot(n, ray.dir) > 0) n = -n;
-    return {hit.point, n, ray.dir};
+    return {hit.point, n, ray.dir, hit.uv};
 }
 
 bool is_texture_map(const scene::LayeredTexture* t) {
@@ -163,7 +163,8 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, 
     // texture_map: shade both neighbouring entries, at the map's pattern point and in its
     // frame, and blend.
     const scene::Texture& t = *texture->front();
-    const TexturePoint tp{pattern_point(t.pattern, at.point),
+    const SurfacePoint surface = surface_point(ray, hit);
+    const TexturePoint tp{pattern_point(t.pattern, source_point(t.pattern, at.point, &surface)),
                           at.frame.then(NormalFrame::of(t.pattern))};
     auto entry = [&](int i, double w) {
         Context sub = ctx;
@@ -187,7 +188,6 @@ RayColour Tracer::shade(const Ray& ray, const Hit& hit, const TexturePoint& at, 
         }
         return out;
     }
-    const SurfacePoint surface = surface_point(ray, hit);
     const BlendWeights b =
         blend_weights(t.texture_map, pattern_value_at(t.pattern, tp.point, &surface));
     if (b.upper_weight == 0) return entry(b.lower, 1.0);

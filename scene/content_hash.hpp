@@ -87,7 +87,7 @@ public:
     // (finishes, normals and interiors are left out: see each caller for why that is enough).
     void add(const Pattern& p) {
         add(p.kind), add(p.frequency), add(p.phase), add(p.wave), add(p.wave_exponent);
-        add(p.noise_generator), add(p.steps.steps);
+        add(p.noise_generator), add(p.steps.steps), add(p.uv_mapping);
     }
     void add(const Pigment& p) {
         add(p.pattern), add(p.colour), add(p.colour_map), add(p.pigment_map), add(p.list_form);

@@ -48,6 +48,8 @@ struct Object {
     std::vector<ObjectPtr> bounded_by;  // in world space (already transformed)
     bool inverse = false, hollow = false, no_shadow = false, no_image = false,
          no_reflection = false, double_illuminate = false, no_radiosity = false;
+    // Object-level `uv_mapping`: every texture given after it is uv-mapped (Pattern::uv_mapping).
+    bool uv_mapping = false;
     std::vector<Unsupported> unsupported;  // unsupported modifiers used on this object
     SourceLoc loc;
 };

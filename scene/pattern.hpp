@@ -33,6 +33,9 @@ struct Pattern {
     int noise_generator = 0;               // 0 = global_settings' choice; 1..3 as in POV
     std::shared_ptr<const PatternGlobals> globals;  // null = POV's defaults
     PatternSteps steps;                    // transforms and warps, pattern space -> world
+    // `uv_mapping`: the pattern is evaluated at (u, v, 0) of the surface hit (render/hit.hpp)
+    // through its own steps only; transforms from outside (the object's) do not reach it.
+    bool uv_mapping = false;
     std::optional<Unsupported> unsupported;  // set when the pattern or a modifier is unsupported
 
     PatternType type() const { return PatternType(kind.index()); }

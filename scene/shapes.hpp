@@ -65,7 +65,8 @@ struct Triangle {
     std::array<glm::dvec3, 3> p{};
     std::array<glm::dvec3, 3> n{};  // vertex normals (normalised), used when smooth
     bool smooth = false;
-    LUMEN_FIELDS(f("points", s.p), f("normals", s.n), f("smooth", s.smooth))
+    std::array<glm::dvec2, 3> uv{};  // `uv_vectors`: only a mesh's triangles use them
+    LUMEN_FIELDS(f("points", s.p), f("normals", s.n), f("smooth", s.smooth), f("uv", s.uv))
 };
 struct Polygon {  // as written (sub-polygons closed)
     std::vector<glm::dvec3> points;
@@ -79,14 +80,18 @@ struct Mesh {
         std::array<int, 3> v{};       // vertex indices
         std::array<int, 3> n{-1, -1, -1};  // normal indices (-1 = flat)
         std::array<int, 3> tex{-1, -1, -1};  // texture_list indices (-1 = object texture)
-        LUMEN_FIELDS(f("v", s.v), f("n", s.n), f("tex", s.tex))
+        std::array<int, 3> uv{-1, -1, -1};   // uv indices (-1 = uv (0, 0))
+        LUMEN_FIELDS(f("v", s.v), f("n", s.n), f("tex", s.tex), f("uv", s.uv))
     };
     std::vector<Face> faces;
     std::vector<LayeredTexture> textures;  // texture_list / per-triangle textures
     std::optional<glm::dvec3> inside_vector;
+    // A bicubic_patch's texture corners s0..s3 (its `uv_vectors`), empty for other meshes: the
+    // face uvs are then the patch parameters (u, v), mapped bilinearly onto the corners.
+    std::vector<glm::dvec2> patch_corners;
     LUMEN_FIELDS(f("vertices", s.vertices), f("normals", s.normals), f("uvs", s.uvs),
                  f("faces", s.faces), f("textures", s.textures),
-                 f("inside_vector", s.inside_vector))
+                 f("inside_vector", s.inside_vector), f("patch_corners", s.patch_corners))
 };
 
 // text { ttf "font" "string" thickness, offset }: the glyphs of the string as read from the

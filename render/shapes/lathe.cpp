@@ -61,15 +61,19 @@ bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax,
     double best = search->best;
     glm::dvec3 normal(0);
     bool found = false;
+    double along = 0;  // segment index + spline parameter of the best hit (uv_mapping's v)
+    double index = 0;
     auto offer = [&](double k, const CurveSegment& seg, double w) {
         if (!(k > k_min && k < best)) return;
         best = k;
         found = true;
         normal = lathe_normal(seg, w, P + k * D);
+        along = index + w;
     };
     const double rr = D.x * D.x + D.z * D.z, m = D.x * P.x + D.z * P.z;
     const double rho2 = P.x * P.x + P.z * P.z;
     for (const CurveSegment& seg : s.curve.segments) {
+        index = double(&seg - s.curve.segments.data());
         const double ro = std::max(std::abs(seg.lo.x), std::abs(seg.hi.x));
         if (!slab.hits(padded_box({{-ro, seg.lo.y, -ro}, {ro, seg.hi.y, ro}}), k_min, best)) continue;
         double x[4], y[4];
@@ -99,6 +103,7 @@ bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax,
     if (!found) return false;
     h.t = best / len;
     h.normal = normal;
+    h.uv = {0, along / double(s.curve.segments.size())};
     return true;
 }
 

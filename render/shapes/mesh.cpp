@@ -25,6 +25,20 @@ void for_candidates(const MeshShape& s, const LocalRay& r, double tmin, double& 
     s.bvh.traverse(SlabRay(r.o, r.d), tmin, tmax, visit);
 }
 
+// The corners' uvs blended by the hit's barycentric weights ((0, 0) without uvs); a
+// bicubic_patch's (patch u, patch v) then lands bilinearly on its texture corners s0..s3.
+glm::dvec2 face_uv(const scene::Mesh& m, const scene::Mesh::Face& face, double b1, double b2) {
+    if (!valid_index(face.uv[0], m.uvs.size()) || !valid_index(face.uv[1], m.uvs.size()) ||
+        !valid_index(face.uv[2], m.uvs.size()))
+        return glm::dvec2(0);
+    const glm::dvec2 uv = (1 - b1 - b2) * m.uvs[face.uv[0]] + b1 * m.uvs[face.uv[1]] +
+                          b2 * m.uvs[face.uv[2]];
+    if (m.patch_corners.size() != 4) return uv;
+    const std::vector<glm::dvec2>& s = m.patch_corners;
+    const glm::dvec2 low = s[0] + uv.y * (s[1] - s[0]), high = s[3] + uv.y * (s[2] - s[3]);
+    return low + uv.x * (high - low);
+}
+
 }  // namespace
 
 std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
@@ -96,10 +110,7 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
         }
         h.normal = blend_normals(n, flat, best_u, best_v);
     }
-    h.uv = {best_u, best_v};
-    if (!m.uvs.empty() && m.uvs.size() == m.vertices.size())
-        h.uv = (1 - best_u - best_v) * m.uvs[face.v[0]] + best_u * m.uvs[face.v[1]] +
-               best_v * m.uvs[face.v[2]];
+    h.uv = face_uv(m, face, best_u, best_v);
     h.texture = valid_index(face.tex[0], m.textures.size()) ? &m.textures[face.tex[0]] : nullptr;
     return true;
 }

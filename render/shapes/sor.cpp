@@ -87,10 +87,12 @@ bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, S
     double best = search->best;
     glm::dvec3 normal(0);
     bool found = false;
-    auto offer = [&](double k, const glm::dvec3& n) {
+    double v = 0;  // uv_mapping's v of the best hit: the sides 0..1, base -1..0, cap 1..2
+    auto offer = [&](double k, const glm::dvec3& n, double along) {
         if (!(k > k_min && k < best)) return;
         best = k;
         normal = n;
+        v = along;
         found = true;
     };
     if (!s.open && std::abs(D.y) >= kParallel) {
@@ -99,12 +101,16 @@ bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, S
         for (const auto& disc : discs) {
             if (!(disc.r2 > 1e-4)) continue;
             const double k = (disc.y - P.y) / D.y;
-            const double u = P.x + k * D.x, v = P.z + k * D.z;
-            if (u * u + v * v <= disc.r2) offer(k, {0, disc.side, 0});
+            const double x = P.x + k * D.x, z = P.z + k * D.z, rr = x * x + z * z;
+            if (rr > disc.r2) continue;
+            const double f = std::sqrt(rr / disc.r2);  // out from the axis, 0..1
+            offer(k, {0, disc.side, 0}, disc.side < 0 ? f - 1 : 2 - f);
         }
     }
     const double dxz = D.x * D.x + D.z * D.z, pd = P.x * D.x + P.z * D.z;
+    const double segments = double(s.segments.size());
     for (const SorSegment& seg : s.segments) {
+        const double index = double(&seg - s.segments.data());
         double lo, hi;
         const Aabb box{{-seg.rmax, seg.y1, -seg.rmax}, {seg.rmax, seg.y2, seg.rmax}};
         if (!slab.hits(padded_box(box), k_min, best, lo, hi)) continue;
@@ -117,12 +123,14 @@ bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, S
         for (int i = 0; i < n; ++i) {
             const glm::dvec3 q = P + k[i] * D;
             if (!(q.y >= seg.y1 && q.y <= seg.y2)) continue;
-            offer(k[i], {q.x, -0.5 * ((3 * A * q.y + 2 * B) * q.y + C), q.z});
+            offer(k[i], {q.x, -0.5 * ((3 * A * q.y + 2 * B) * q.y + C), q.z},
+                  (index + (q.y - seg.y1) / (seg.y2 - seg.y1)) / segments);
         }
     }
     if (!found) return false;
     h.t = best / len;
     h.normal = normal;
+    h.uv = {0, v};
     return true;
 }
 
