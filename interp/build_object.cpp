@@ -289,6 +289,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::JuliaFractal>, ItemCur
     return build_julia_fractal(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::SphereSweep>, ItemCursor& cur) {
+    return build_sphere_sweep(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -385,6 +385,20 @@ struct ShapeDumper {
         put_if(o, "smooth", h.smooth, false);
         put_if(o, "hierarchy", h.hierarchy, true);
     }
+    void operator()(const scene::SphereSweep& s) const {
+        static const char* splines[] = {"linear_spline", "b_spline", "cubic_spline"};
+        o.put("type", Json::str("sphere_sweep"));
+        o.put("spline", Json::str(splines[static_cast<int>(s.spline)]));
+        Json spheres = Json::array();
+        for (const scene::Sphere& p : s.spheres) {
+            Json j;
+            j.put("center", vec(p.center));
+            j.put("radius", Json::num(p.radius));
+            spheres.push(j);
+        }
+        o.put("spheres", spheres);
+        o.put("tolerance", Json::num(s.tolerance));
+    }
     void operator()(const scene::JuliaFractal& j) const {
         static const char* fns[] = {"sqr",  "cube",  "exp",  "reciprocal", "sin",   "asin",
                                     "sinh", "asinh", "cos",  "acos",       "cosh",  "acosh",

@@ -269,6 +269,11 @@ struct ShapeBoxes {
         const double r = j.bound_radius();
         return {{glm::dvec3(-r), glm::dvec3(r)}};
     }
+    ShapeBox operator()(const scene::SphereSweep& s) const {
+        Extents e;
+        s.control_box(e.min, e.max);
+        return {e};
+    }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
         unsupported_error(u.what);

@@ -15,6 +15,7 @@
 #include "render/shapes/sor.hpp"
 #include "render/shapes/quadric.hpp"
 #include "render/shapes/sphere.hpp"
+#include "render/shapes/sphere_sweep.hpp"
 #include "render/shapes/superellipsoid.hpp"
 #include "render/shapes/height_field.hpp"
 #include "render/shapes/text.hpp"

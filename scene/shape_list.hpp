@@ -34,7 +34,8 @@
     X(Blob, "blob")                            \
     X(Ovus, "ovus")                            \
     X(HeightField, "height_field")             \
-    X(JuliaFractal, "julia_fractal")
+    X(JuliaFractal, "julia_fractal")           \
+    X(SphereSweep, "sphere_sweep")
 
 namespace lumen::scene {
 
@@ -60,7 +61,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "isosurface", "lemon", "light_group", "parametric", "sphere_sweep"};
+    "isosurface", "lemon", "light_group", "parametric"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -1,6 +1,7 @@
 // The primitive shapes of scene/shape_list.hpp as plain data, in the object's own
 // coordinates as written.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -279,6 +280,33 @@ struct JuliaFractal {
     double exit_value() const {
         const double r = bound_radius();
         return algebra == JuliaAlgebra::Hypercomplex ? 16 : r * r + 1e-7;
+    }
+};
+
+// sphere_sweep { linear_spline | b_spline | cubic_spline N, <c1>, r1, ... [tolerance T] }:
+// the space a sphere fills while its centre and radius follow the spline through the listed
+// spheres (render/shapes/sphere_sweep.hpp). Only r^2 matters to the surface (POV-Ray draws a
+// radius running from 0.3 to -0.5 as one narrowing to 0 and widening again: measured).
+enum class SweepSpline { Linear, BSpline, Cubic };
+struct SphereSweep {
+    SweepSpline spline = SweepSpline::Linear;
+    std::vector<Sphere> spheres;  // as written; b_spline and cubic_spline use the first and
+                                  // last only to steer the curve
+    double tolerance = 1e-6;      // the depth below which hits are ignored
+    LUMEN_FIELDS(f("spline", s.spline), f("spheres", s.spheres), f("tolerance", s.tolerance))
+
+    // POV-Ray's box: every listed sphere's centre -/+ its radius, twice the radius for
+    // cubic_spline (measured with min_extent/max_extent). Written radii keep their sign, so
+    // all-negative radii give an inverted box, and POV-Ray then draws nothing.
+    void control_box(glm::dvec3& lo, glm::dvec3& hi) const {
+        const double k = spline == SweepSpline::Cubic ? 2 : 1;
+        lo = glm::dvec3(1e300);
+        hi = glm::dvec3(-1e300);
+        for (const Sphere& p : spheres)
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], p.center[a] - k * p.radius);
+                hi[a] = std::max(hi[a], p.center[a] + k * p.radius);
+            }
     }
 };
 

@@ -277,6 +277,7 @@ struct ShapeMesher {
     // Height fields are not meshed yet: they only occlude.
     NotMeshed operator()(const scene::HeightField&) const { return {}; }
     NotMeshed operator()(const scene::JuliaFractal&) const { return {}; }
+    NotMeshed operator()(const scene::SphereSweep&) const { return {}; }
     // Unions are meshed through by the caller; other CSG only occludes.
     NotMeshed operator()(const scene::Csg&) const { return {}; }
     NotMeshed operator()(const scene::UnsupportedShape&) const { return {}; }

@@ -172,6 +172,14 @@ scene::JuliaFractal sample_shape(std::type_identity<scene::JuliaFractal>) {
     j.slice_distance = 0.5;
     return j;
 }
+// A cubic_spline sweep: a bend, a swelling and a radius changing sign (a pinch to a point).
+scene::SphereSweep sample_shape(std::type_identity<scene::SphereSweep>) {
+    scene::SphereSweep s;
+    s.spline = scene::SweepSpline::Cubic;
+    s.spheres = {{{-1.2, -0.6, 0}, 0.3}, {{-0.8, 0, 0}, 0.35}, {{0, 0.4, 0.3}, 0.5},
+                 {{0.6, -0.2, 0}, -0.2}, {{1, 0.5, -0.3}, 0.3}, {{1.4, 0.8, 0}, 0.3}};
+    return s;
+}
 // julia_fractal's bisection stops at 1e-7 in object space (POV-Ray's): a hit found twice may
 // differ by that much, times the placement's scale.
 template <> constexpr double kRefindTolerance<scene::JuliaFractal> = 1e-6;
