@@ -58,9 +58,9 @@ double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& a
 // Single patterned texture whose entries are shaded separately and blended.
 // The hit as the surface patterns (slope, aoi) see it: the normal turned to face the ray.
 SurfacePoint surface_point(const Ray& ray, const Hit& hit) {
-    if (hit.pattern_normal) return {hit.point, *hit.pattern_normal, ray.dir};
     glm::dvec3 n = hit.normal;
-    if (glm::dot(n, ray.dir) > 0) n = -n;
+    if (hit.pattern_normal) n = *hit.pattern_normal;
+    else if (glm::dot(n, ray.dir) > 0) n = -n;
     return {hit.point, n, ray.dir, hit.uv};
 }
 
