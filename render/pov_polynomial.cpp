@@ -2,6 +2,7 @@
 // roots and the cases where a root is lost or kept are what images depend on.
 #include "render/pov_polynomial.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lumen::render {
@@ -14,10 +15,12 @@ constexpr int kMaxIterations = 50;
 constexpr double kMaxDistance = 1e7;  // the Sturm search covers [0, kMaxDistance]
 constexpr double kDifficultRatio = 1e12;
 
-// A polynomial with its coefficients LOWEST power first (the Sturm sequence's layout).
+// A polynomial with its coefficients LOWEST power first (the Sturm sequence's layout). Only
+// c[0..order] is ever set or read: the coefficients are left uninitialised, since clearing a
+// Sturm sequence of kMaxPolyOrder + 1 of them (10 KB) cost more than a sextic's whole search.
 struct Poly {
     int order = 0;
-    double c[kMaxPolyOrder + 1] = {};
+    double c[kMaxPolyOrder + 1];
     double at(double x) const {
         double v = c[order];
         for (int i = order - 1; i >= 0; --i) v = v * x + c[i];
@@ -28,7 +31,8 @@ struct Poly {
 // r = u mod v, for v with leading coefficient +-1; remainder coefficients below kSmall are
 // zeroed from the top. Returns the remainder's order (0 for a constant).
 int remainder(const Poly& u, const Poly& v, Poly& r) {
-    r = u;
+    r.order = u.order;
+    std::copy(u.c, u.c + u.order + 1, r.c);
     const int shift = u.order - v.order;
     if (v.c[v.order] < 0) {
         // Dividing by -v: the quotient's signs alternate, written into r as it goes.

@@ -176,6 +176,9 @@ struct Sweep {
     std::vector<int> element;          // per interval
     std::vector<std::array<double, 5>> quartic;  // per interval, made on entry
     std::vector<int> active, position; // the intervals the sweep is in, and where in `active`
+    // seen[i] == ray: element i's interval is collected already (the windows overlap).
+    std::vector<uint32_t> seen;
+    uint32_t ray = 0;
 };
 
 // The gradient of the density at p from the elements of the active intervals.
@@ -302,91 +305,142 @@ bool inside(const BlobShape& s, const glm::dvec3& p) {
     return s.valid && blob_density(s, p) > s.threshold - kInsideTolerance;
 }
 
+namespace {
+
+// The intervals of the elements whose boxes the unit ray o + t d crosses within [from, to]
+// and that no earlier window collected, their events appended unsorted.
+void collect_window(const BlobShape& s, const glm::dvec3& o, const glm::dvec3& d, double from,
+                    double to, Sweep& sw) {
+    for_each_candidate(s, o, d, from, to, [&](int i) {
+        if (sw.seen[size_t(i)] == sw.ray) return;
+        sw.seen[size_t(i)] = sw.ray;
+        const BlobElement& e = s.elements[i];
+        double t0, t1;
+        if (!element_interval(e, to_element(s, e, o), to_element_dir(s, e, d), t0, t1)) return;
+        if (t1 < kDepthBlob) return;
+        t0 = std::max(t0, kDepthBlob);
+        const int slot = int(sw.element.size());
+        sw.element.push_back(i);
+        sw.events.push_back({t0, slot, true});
+        sw.events.push_back({t1, slot, false});
+    });
+}
+
+// The first window's share of the ray's span through the blob's box; each next window is
+// twice as long as the one before.
+constexpr double kFirstWindow = 1.0 / 8;
+
+}  // namespace
+
+// POV-Ray collects every interval along the ray, sorts them and sweeps them front to back
+// until a piece has a root. Here the intervals are collected window by window along the
+// ray's span through the blob's box, so a ray that hits stops collecting soon after its
+// hit: after a window ending at W every event before W is known (an element entered before
+// W has a box the window crossed), so the sweep runs up to W. The sums are POV-Ray's; its
+// scale (the last event, known only at the end) becomes the box's exit, which moves the
+// roots by rounding only (each is polished on the unscaled quartic).
 bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
     const double len = glm::length(r.d);
     if (!(len > 0) || !std::isfinite(len)) return false;
     const glm::dvec3 d = r.d / len;
     const glm::dvec3& o = r.o;
+    const double far = tmax * len;
+    double enter, exit;
+    if (!SlabRay(o, d).hits(s.box, kDepthBlob, kHuge, enter, exit) || !(enter <= far)) return false;
+    if (!std::isfinite(exit)) return false;
 
-    // The elements' intervals along the unit ray, entries and exits sorted.
     thread_local Sweep sw;
     std::vector<Event>& events = sw.events;
     events.clear();
     sw.element.clear();
     sw.active.clear();
-    const double mindist = kDepthBlob;
-    for_each_candidate(s, o, d, mindist, tmax * len, [&](int i) {
-        const BlobElement& e = s.elements[i];
-        double t0, t1;
-        if (!element_interval(e, to_element(s, e, o), to_element_dir(s, e, d), t0, t1)) return;
-        if (t1 < mindist) return;
-        t0 = std::max(t0, mindist);
-        const int slot = int(sw.element.size());
-        sw.element.push_back(i);
-        events.push_back({t0, slot, true});
-        events.push_back({t1, slot, false});
-    });
-    if (events.empty()) return false;
-    std::sort(events.begin(), events.end(),
-              [](const Event& a, const Event& b) { return a.t < b.t; });
-    if (sw.quartic.size() < sw.element.size()) {
-        sw.quartic.resize(sw.element.size());
-        sw.position.resize(sw.element.size());
+    if (sw.seen.size() < s.elements.size()) sw.seen.resize(s.elements.size(), sw.ray);
+    if (++sw.ray == 0) {  // the stamps wrapped: start them over
+        std::fill(sw.seen.begin(), sw.seen.end(), 0u);
+        sw.ray = 1;
     }
-
-    // Start at the first entry and scale so the events span [0, 1].
-    const double start = events.front().t >= kSmallTolerance ? events.front().t : 0;
-    const double scale = events.back().t - start;
-    if (!(scale > 0) || !std::isfinite(scale)) return false;
-    const glm::dvec3 so = o + start * d, sd = d * scale;
+    auto by_depth = [](const Event& a, const Event& b) { return a.t < b.t; };
 
     // The running sum of the active elements' quartics, lowest power first: each added on
     // entry and subtracted on exit, as POV-Ray sums them.
     double sum[5] = {-s.threshold, 0, 0, 0, 0};
-    for (size_t k = 0; k + 1 < events.size(); ++k) {
-        const Event& ev = events[k];
-        std::array<double, 5>& q = sw.quartic[ev.slot];
-        if (ev.enter) {
-            const BlobElement& e = s.elements[sw.element[ev.slot]];
-            element_quartic(e, to_element(s, e, so), to_element_dir(s, e, sd), q.data());
-            for (int i = 0; i < 5; ++i) sum[i] += q[i];
-            sw.position[ev.slot] = int(sw.active.size());
-            sw.active.push_back(ev.slot);
-        } else {
-            for (int i = 0; i < 5; ++i) sum[i] -= q[i];
-            const int at = sw.position[ev.slot];
-            sw.active[at] = sw.active.back();
-            sw.position[sw.active[at]] = at;
-            sw.active.pop_back();
+    double start = 0, scale = 0;
+    glm::dvec3 so(0), sd(0);
+    bool started = false;
+    size_t k = 0;  // the next event to sweep
+    const double last_end = std::min(exit, far);
+    double window = (exit - enter) * kFirstWindow, from = enter;
+    for (;;) {
+        const double to = std::min(from + window, last_end);
+        const bool final = !(to < last_end);
+        const size_t old = events.size();
+        collect_window(s, o, d, from, final ? far : to, sw);
+        if (events.size() > old) {
+            // An event a hair before the part already swept (rounding): it starts there.
+            const double swept = k > 0 ? events[k - 1].t : -kHuge;
+            for (size_t i = old; i < events.size(); ++i) events[i].t = std::max(events[i].t, swept);
+            std::sort(events.begin() + std::ptrdiff_t(k), events.end(), by_depth);
         }
-        const double l = (ev.t - start) / scale, w = (events[k + 1].t - ev.t) / scale;
-        if (!(w > 0)) continue;
-        // The world depths of the piece, to skip what lies before tmin.
-        if ((l + w) * scale + start <= tmin * len) continue;
-        if ((l * scale + start) / len >= tmax) break;
-        if (!may_have_root(sum, l, w)) continue;
-        const double high_first[5] = {sum[4], sum[3], sum[2], sum[1], sum[0]};
-        double roots[4];
-        const int n = solve_pov_polynomial(4, high_first, roots, s.sturm, kRootTolerance);
-        double best = tmax;
-        bool found = false;
-        for (int i = 0; i < n; ++i) {
-            if (!(roots[i] >= l && roots[i] <= l + w)) continue;
-            const double depth = (polished(sum, roots[i], l, w) * scale + start) / len;
-            if (depth > tmin && depth > kDepthBlob && depth < kMaxDistance && depth < best) {
-                best = depth;
-                found = true;
+        if (sw.quartic.size() < sw.element.size()) {
+            sw.quartic.resize(sw.element.size());
+            sw.position.resize(sw.element.size());
+        }
+        if (!started && !events.empty() && (final || events.front().t <= to)) {
+            // Start at the first entry and scale so the box's span from there is [0, 1].
+            start = events.front().t >= kSmallTolerance ? events.front().t : 0;
+            scale = exit - start;
+            if (!(scale > 0) || !std::isfinite(scale)) return false;
+            so = o + start * d;
+            sd = d * scale;
+            started = true;
+        }
+        for (; started && k + 1 < events.size() && (final || events[k + 1].t <= to); ++k) {
+            const Event& ev = events[k];
+            std::array<double, 5>& q = sw.quartic[ev.slot];
+            if (ev.enter) {
+                const BlobElement& e = s.elements[sw.element[ev.slot]];
+                element_quartic(e, to_element(s, e, so), to_element_dir(s, e, sd), q.data());
+                for (int i = 0; i < 5; ++i) sum[i] += q[i];
+                sw.position[ev.slot] = int(sw.active.size());
+                sw.active.push_back(ev.slot);
+            } else {
+                for (int i = 0; i < 5; ++i) sum[i] -= q[i];
+                const int at = sw.position[ev.slot];
+                sw.active[at] = sw.active.back();
+                sw.position[sw.active[at]] = at;
+                sw.active.pop_back();
             }
+            const double l = (ev.t - start) / scale, w = (events[k + 1].t - ev.t) / scale;
+            if (!(w > 0)) continue;
+            // The world depths of the piece, to skip what lies before tmin.
+            if ((l + w) * scale + start <= tmin * len) continue;
+            if ((l * scale + start) / len >= tmax) return false;
+            if (!may_have_root(sum, l, w)) continue;
+            const double high_first[5] = {sum[4], sum[3], sum[2], sum[1], sum[0]};
+            double roots[4];
+            const int n = solve_pov_polynomial(4, high_first, roots, s.sturm, kRootTolerance);
+            double best = tmax;
+            bool found = false;
+            for (int i = 0; i < n; ++i) {
+                if (!(roots[i] >= l && roots[i] <= l + w)) continue;
+                const double depth = (polished(sum, roots[i], l, w) * scale + start) / len;
+                if (depth > tmin && depth > kDepthBlob && depth < kMaxDistance && depth < best) {
+                    best = depth;
+                    found = true;
+                }
+            }
+            if (!found) continue;
+            h.t = best;
+            h.normal = -active_gradient(s, sw, r.at(best));
+            if (!(glm::dot(h.normal, h.normal) > 0) || !std::isfinite(glm::dot(h.normal, h.normal)))
+                h.normal = -d;  // a point where the gradient vanishes: face the ray
+            return true;
         }
-        if (!found) continue;
-        h.t = best;
-        h.normal = -active_gradient(s, sw, r.at(best));
-        if (!(glm::dot(h.normal, h.normal) > 0) || !std::isfinite(glm::dot(h.normal, h.normal)))
-            h.normal = -d;  // a point where the gradient vanishes: face the ray
-        return true;
+        if (final) return false;
+        from = to;
+        window *= 2;
     }
-    return false;
 }
 
 }  // namespace lumen::render

@@ -79,23 +79,21 @@ int general_roots(const PolyShape& s, const glm::dvec3& o, const glm::dvec3& d, 
     double eqn[kMaxPolyOrder + 1] = {};
     double ex[kMaxPolyOrder + 1], ey[kMaxPolyOrder + 1], ez[kMaxPolyOrder + 1];
     int last_i = -1, last_j = -1;
-    for_each_term(n, [&](int term, int i, int j, int k) {
-        if (i != last_i) { expand(0, i, ex); last_i = i; last_j = -1; }
-        if (j != last_j) { expand(1, j, ey); last_j = j; }
-        const double c = s.coeffs[term];
-        if (c == 0) return;
-        expand(2, k, ez);
-        const int offset = n - (i + j + k);  // eqn[h]: the coefficient of k^(n - h)
-        for (int a = 0; a <= i; ++a)
-            for (int b = 0; b <= j; ++b)
-                for (int e = 0; e <= k; ++e) {
-                    double v = c;
+    for (const PolyShape::Term& t : s.terms) {
+        if (t.i != last_i) { expand(0, t.i, ex); last_i = t.i; last_j = -1; }
+        if (t.j != last_j) { expand(1, t.j, ey); last_j = t.j; }
+        expand(2, t.k, ez);
+        const int offset = n - (t.i + t.j + t.k);  // eqn[h]: the coefficient of k^(n - h)
+        for (int a = 0; a <= t.i; ++a)
+            for (int b = 0; b <= t.j; ++b)
+                for (int e = 0; e <= t.k; ++e) {
+                    double v = t.c;
                     v *= ex[a];
                     v *= ey[b];
                     v *= ez[e];
                     eqn[offset + a + b + e] += v;
                 }
-    });
+    }
     int lead = 0;
     while (lead <= n && eqn[lead] == 0) ++lead;
     const int degree = n - lead;
@@ -106,10 +104,14 @@ int general_roots(const PolyShape& s, const glm::dvec3& o, const glm::dvec3& d, 
 }  // namespace
 
 PolyShape make_poly(const scene::Poly& p) {
-    PolyShape out{p.order, p.coeffs, p.sturm, false};
+    PolyShape out{p.order, p.coeffs, p.sturm, false, {}};
     out.valid = p.order >= 2 && p.order <= kMaxPolyOrder &&
                 p.coeffs.size() == scene::Poly::term_count(p.order) &&
                 std::all_of(p.coeffs.begin(), p.coeffs.end(), [](double c) { return std::isfinite(c); });
+    if (out.valid)
+        for_each_term(p.order, [&](int term, int i, int j, int k) {
+            if (p.coeffs[term] != 0) out.terms.push_back({p.coeffs[term], i, j, k});
+        });
     return out;
 }
 
@@ -167,9 +169,7 @@ double poly_value(const PolyShape& s, const glm::dvec3& p) {
     const Powers w(s.order, p);
     const double *px = w.px, *py = w.py, *pz = w.pz;
     double v = 0;
-    for_each_term(s.order, [&](int term, int i, int j, int k) {
-        if (s.coeffs[term] != 0) v += s.coeffs[term] * px[i] * py[j] * pz[k];
-    });
+    for (const PolyShape::Term& t : s.terms) v += t.c * px[t.i] * py[t.j] * pz[t.k];
     return v;
 }
 
@@ -177,13 +177,11 @@ glm::dvec3 poly_gradient(const PolyShape& s, const glm::dvec3& p) {
     const Powers w(s.order, p);
     const double *px = w.px, *py = w.py, *pz = w.pz;
     glm::dvec3 g(0);
-    for_each_term(s.order, [&](int term, int i, int j, int k) {
-        const double c = s.coeffs[term];
-        if (c == 0) return;
+    for (const auto& [c, i, j, k] : s.terms) {
         if (i > 0) g.x += i * c * px[i - 1] * py[j] * pz[k];
         if (j > 0) g.y += j * c * px[i] * py[j - 1] * pz[k];
         if (k > 0) g.z += k * c * px[i] * py[j] * pz[k - 1];
-    });
+    }
     return g;
 }
 

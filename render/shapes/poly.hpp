@@ -13,6 +13,13 @@ struct PolyShape {
     std::vector<double> coeffs;  // POV-Ray's term order (scene::Poly)
     bool sturm = false;
     bool valid = false;
+    // The non-zero terms c x^i y^j z^k, in that order: the per-ray expansion visits only these
+    // (a sextic has 84 terms, x^6 + y^6 + z^6 - c has 4).
+    struct Term {
+        double c;
+        int i, j, k;
+    };
+    std::vector<Term> terms;
 };
 
 PolyShape make_poly(const scene::Poly& p);
