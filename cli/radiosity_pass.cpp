@@ -7,6 +7,7 @@
 
 #include "render/camera.hpp"
 
+#include "render/radiosity/surface_light.hpp"
 #include "render/radiosity/solution_io.hpp"
 #include "render/radiosity/solution_key.hpp"
 
@@ -49,9 +50,11 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
                                            : int(std::max(1u, std::thread::hardware_concurrency()));
     display_.reset();
     receivers_.reset();
+    points_.reset();
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
-    mesh_ = std::make_unique<rad::SceneMesh>(rad::build_scene_mesh(geometry, options.patch_size));
+    mesh_ = std::make_unique<rad::SceneMesh>(
+        rad::build_scene_mesh(geometry, options.patch_size, rad::ambient_emission(scene)));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
 
     const uint64_t key = rad::solution_key(frame, *mesh_, options);
@@ -73,6 +76,8 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
     bounces_ = rad::effective_bounces(scene, options);
 
     const rad::DisplaySettings ds = rad::display_settings(scene, options);
+    points_ = std::make_unique<rad::PointGather>(frame, *mesh_, &solution_->B,
+                                                 rad::point_gather_settings(scene, ds, bounces_));
     if (options.display == rad::DisplayMode::Preview) {
         // The view-dependent part: a many-ray final gather at the vertices the camera sees
         // (the rest keep the solution's G, for reflections).
@@ -83,11 +88,11 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
         receivers_ = std::make_unique<rad::ReceiverMesh>(
             rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays,
-                         threads, solution_->G, options.subdivision));
+                         threads, solution_->G, options.subdivision, points_.get()));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        display_ = rad::make_preview(*mesh_, *receivers_, ds);
+        display_ = rad::make_preview(*mesh_, *receivers_, points_.get(), ds);
     } else {
-        display_ = rad::make_gather(scene, *mesh_, *solution_, geometry, ds);
+        display_ = rad::make_gather(*points_, ds);
     }
     return display_.get();
 }
@@ -119,6 +124,9 @@ std::string RadiosityPass::summary() const {
                            std::to_string(receivers_->added_vertices()) + " vertices added"
                      : std::string()) +
                 ")";
+    if (points_ && !dynamic_cast<const rad::GatherStats*>(display_.get()) && points_->cache_points())
+        line += ", point gathers " + seconds(points_->gather_seconds()) + " (" +
+                std::to_string(points_->cache_points()) + " cache points)";
     return line;
 }
 

@@ -53,6 +53,7 @@ private:
     std::unique_ptr<render::radiosity::SceneMesh> mesh_;
     std::optional<render::radiosity::Solution> solution_;
     std::unique_ptr<render::radiosity::ReceiverMesh> receivers_;  // G shown in this view
+    std::unique_ptr<render::radiosity::PointGather> points_;      // where no element is
     size_t gathered_ = 0;            // vertex sides gathered for this view
     double gather_seconds_ = 0;
     std::unique_ptr<render::IndirectLight> display_;

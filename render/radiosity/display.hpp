@@ -1,6 +1,7 @@
 // Showing the radiosity solution: the tracer asks for the incident
 // indirect light G at each diffuse hit.
 // - preview: G interpolated from the element's vertices (fast; shows the mesh).
+//   Hits on surfaces without elements gather per point (point_gather.hpp).
 // - gather: a final gather per point (cosine rays whose hits return the interpolated B of
 //   the previous bounce, misses the background) through a Ward-style irradiance cache shared
 //   by the render threads; this is POV's look without its bounce noise.
@@ -9,6 +10,7 @@
 
 #include "render/indirect_light.hpp"
 #include "render/intersector.hpp"
+#include "render/radiosity/point_gather.hpp"
 #include "render/radiosity/receivers.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/scene_solution.hpp"
@@ -42,15 +44,18 @@ public:
     virtual double gather_seconds() const = 0;  // summed over threads
 };
 
-// The receivers' G, interpolated over the (split) element hit; `receivers` must outlive the
-// result.
+// The receivers' G, interpolated over the (split) element hit, and `points`' gather where a
+// hit is on no element (none when null); both must outlive the result.
 std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const ReceiverMesh& receivers,
+                                            const PointGather* points,
                                             const DisplaySettings& settings);
 
-// `geometry`, `mesh`, `solution` and `scene` must outlive the result.
-std::unique_ptr<IndirectLight> make_gather(const scene::Scene& scene, const SceneMesh& mesh,
-                                           const Solution& solution,
-                                           const Intersector& geometry,
+// `points`' gather at every hit; it must outlive the result.
+std::unique_ptr<IndirectLight> make_gather(const PointGather& points,
                                            const DisplaySettings& settings);
+
+// The point gathers of the display: its rays and cache, `bounces` levels deep.
+PointGatherSettings point_gather_settings(const scene::Scene& scene, const DisplaySettings& s,
+                                          int bounces);
 
 }  // namespace lumen::render::radiosity

@@ -142,7 +142,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const std::vector<glm::dvec3>& B,
                      const std::vector<char>& wanted, int rays, int threads,
                      const std::vector<glm::dvec3>& fallback,
-                     const SubdivisionOptions& options) {
+                     const SubdivisionOptions& options, const UnmeshedSurfaces* unmeshed) {
     ReceiverMesh r(mesh);
     r.G = fallback;
     auto gather = [&](const std::vector<uint32_t>& unknowns) {
@@ -151,7 +151,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                 const uint32_t u = unknowns[i], v = u / 2;
                 const glm::dvec3 n = u % 2 ? -r.normal(v) : r.normal(v);
                 r.G[u] = gather_point(scene, mesh, geometry, B, r.origin(v), n, rays,
-                                      side_seed(u)).G;
+                                      side_seed(u), unmeshed).G;
             }
         });
     };

@@ -16,6 +16,7 @@
 #include "render/intersector.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
+#include "render/radiosity/scene_solution.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::render::radiosity {
@@ -57,13 +58,14 @@ private:
 };
 
 // The final gather at the `wanted` vertex sides with `rays` rays each against the solution's
-// B (the others keep `fallback`), the adaptive subdivision, and one pass of neighbour
+// B and `unmeshed` (the others keep `fallback`), the adaptive subdivision, and one pass of neighbour
 // smoothing over the resulting triangles (it cuts the per-vertex ray noise).
 ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const std::vector<glm::dvec3>& B,
                      const std::vector<char>& wanted, int rays, int threads,
                      const std::vector<glm::dvec3>& fallback,
-                     const SubdivisionOptions& options);
+                     const SubdivisionOptions& options,
+                     const UnmeshedSurfaces* unmeshed = nullptr);
 
 // One pass of neighbour averaging over the vertices sharing a triangle (same side).
 std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,

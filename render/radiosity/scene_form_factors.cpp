@@ -128,7 +128,8 @@ private:
 
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry,
-                                      const RadiosityOptions& options, int threads) {
+                                      const RadiosityOptions& options, int threads,
+                                      const UnmeshedSurfaces* unmeshed) {
     const size_t n = mesh.unknowns();
     std::vector<Row> rows(n);
     VertexFormFactors F;
@@ -153,6 +154,9 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                 auto on_miss = [&](const glm::dvec3& dir, double w) {
                     F.env[u] += w * background_radiance(scene, dir);
                 };
+                auto on_unmeshed = [&](const Hit& hit, const glm::dvec3& dir, double w) {
+                    if (unmeshed) F.env[u] += w * unmeshed->leaving(hit, dir, 1);
+                };
                 counted.clear();
                 if (method == FormFactorMethod::Hemicube) {
                     // A random turn about the normal per vertex side breaks the aliasing.
@@ -167,13 +171,13 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                     for (size_t k = 0; k < cube.dir.size(); ++k) {
                         const glm::dvec3& d = cube.dir[k];
                         trace_ray(mesh, geometry, origin, d.x * x + d.y * y + d.z * normal,
-                                  cube.weight[k], on_hit, on_miss);
+                                  cube.weight[k], on_hit, on_miss, on_unmeshed);
                     }
                 } else {
                     if (method == FormFactorMethod::Analytic)
                         analytic.add(origin, normal, side_seed(u) ^ 0x5bd1e995, entries, counted);
                     cast_rays(mesh, geometry, origin, normal, side_seed(u), options.ff_rays,
-                              on_hit, on_miss);
+                              on_hit, on_miss, on_unmeshed);
                 }
                 std::sort(entries.begin(), entries.end());
                 Row& row = rows[u];

@@ -10,32 +10,21 @@
 
 #include "render/radiosity/mesh_checks.hpp"
 #include "render/radiosity/mesher.hpp"
-#include "render/texture_layers.hpp"
+#include "render/radiosity/surface_light.hpp"
 
 namespace lumen::render::radiosity {
 
 namespace {
 
 // The objects the geometry compiled (unions flattened, so each carries the transform and
-// texture it inherits) that get patches; the rest are noted in `warnings`.
+// texture it inherits) that get patches. The rest are lit where gather rays land on them
+// (point_gather.hpp): no_radiosity objects are invisible to radiosity altogether.
 std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry,
                                                 std::vector<std::string>& warnings) {
     std::vector<const PlacedObject*> out;
     for (const PlacedObject& p : geometry.placed_objects()) {
         const scene::Object& o = *p.object;
-        if (p.no_radiosity) continue;  // invisible to radiosity: not meshed, skipped by gathers
-        if (p.csg) {
-            warnings.push_back(o.loc.str() +
-                               ": warning: radiosity does not mesh this CSG (only unions); "
-                               "it occludes but gets no indirect light");
-            continue;
-        }
-        if (!meshable(o)) {
-            warnings.push_back(o.loc.str() +
-                               ": warning: radiosity cannot mesh this shape; it occludes but "
-                               "gets no indirect light");
-            continue;
-        }
+        if (p.no_radiosity || p.csg || !meshable(o) || never_diffuse(p.texture)) continue;
         if (p.clipped)
             warnings.push_back(o.loc.str() +
                                ": warning: radiosity meshes this object without its clipped_by");
@@ -44,16 +33,12 @@ std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry,
     return out;
 }
 
-// Diffuse reflectance, emission and brilliance of the top layer at p (POV: diffuse × pigment).
-void material_at(const scene::LayeredTexture* texture, const glm::dvec3& p, MeshVertex& v) {
-    ResolvedLayers layers;
-    resolve_layers(texture, p, layers);
-    const ResolvedLayer& top = layers[0];
-    const glm::dvec3 rgb(top.colour.r, top.colour.g, top.colour.b);
-    const double opacity = 1 - top.colour.f - top.colour.t;
-    v.rho = glm::max(glm::dvec3(0), rgb * top.finish->diffuse * opacity);
-    v.emission = glm::max(glm::dvec3(0), rgb * top.finish->emission * opacity);
-    v.brilliance = top.finish->brilliance;
+void material_at(const scene::LayeredTexture* texture, const glm::dvec3& p,
+                 const glm::dvec3& ambient, MeshVertex& v) {
+    const SurfaceMaterial m = surface_material(texture, p, ambient);
+    v.rho = m.rho;
+    v.emission = m.emission;
+    v.brilliance = m.brilliance;
 }
 
 // Vertices are shared by elements of the same texture and plane orientation.
@@ -61,7 +46,8 @@ using WeldKey = std::tuple<long long, long long, long long, int, int, int, const
 
 class Welder {
 public:
-    Welder(SceneMesh& mesh, double quantum) : mesh_(mesh), q_(quantum) {}
+    Welder(SceneMesh& mesh, double quantum, const glm::dvec3& ambient)
+        : mesh_(mesh), q_(quantum), ambient_(ambient) {}
     uint32_t vertex(const glm::dvec3& p, const glm::dvec3& n, const scene::LayeredTexture* t) {
         const WeldKey key{std::llround(p.x / q_), std::llround(p.y / q_), std::llround(p.z / q_),
                           int(std::lround(n.x * 1000)), int(std::lround(n.y * 1000)),
@@ -71,7 +57,7 @@ public:
             MeshVertex v;
             v.position = p;
             v.normal = n;
-            material_at(t, p, v);
+            material_at(t, p, ambient_, v);
             mesh_.vertices.push_back(v);
         }
         return it->second;
@@ -80,6 +66,7 @@ public:
 private:
     SceneMesh& mesh_;
     double q_;
+    glm::dvec3 ambient_;
     std::map<WeldKey, uint32_t> index_;
 };
 
@@ -143,7 +130,8 @@ double default_patch_size(const Aabb& bounds) {
     return diagonal > 0 ? diagonal / 38 : 1.0;
 }
 
-SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size) {
+SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
+                           const glm::dvec3& ambient_emission) {
     SceneMesh mesh;
     const std::vector<const PlacedObject*> pieces = meshed_objects(geometry, mesh.warnings);
 
@@ -166,7 +154,7 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size) {
     opt.bounds_max = bounds.hi + margin;
     opt.max_edge = mesh.patch_size;
 
-    Welder welder(mesh, mesh.patch_size * 1e-6);
+    Welder welder(mesh, mesh.patch_size * 1e-6, ambient_emission);
     for (const PlacedObject* piece : pieces)
         for (const Patch& p : mesh_object(*piece->object, piece->to_world, opt, {}))
             add_patch(mesh, welder, p, *piece);

@@ -75,9 +75,13 @@ struct SceneMesh {
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).
 double default_patch_size(const Aabb& bounds);
 
-// Meshes every meshable object of the compiled geometry (the tracer's: through unions; other
-// CSG, no_radiosity and unsupported shapes are left out and noted in `warnings`), infinite
-// planes clipped to the bounds.
-SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size);
+// Meshes every meshable object of the compiled geometry (the tracer's: through unions), infinite
+// planes clipped to the bounds. Left out: no_radiosity objects, other CSG and the shapes the
+// mesher cannot cut (the gathers evaluate those where their rays land, see point_gather.hpp),
+// and pure emitters (diffuse 0 everywhere: a sky sphere's exact colour comes from its
+// texture at each ray's hit, and its size does not set the patch size). `ambient_emission`:
+// surface_light.hpp.
+SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
+                           const glm::dvec3& ambient_emission = glm::dvec3(0));
 
 }  // namespace lumen::render::radiosity

@@ -15,9 +15,11 @@
 #include "base/stop_request.hpp"
 #include "render/camera.hpp"
 #include "render/lights.hpp"
+#include "render/radiosity/point_gather.hpp"
 #include "render/radiosity/ray_cast.hpp"
 #include "render/radiosity/solver.hpp"
 #include "render/radiosity/sparse_solve.hpp"
+#include "render/radiosity/surface_light.hpp"
 #include "render/radiosity/vertex_rays.hpp"
 #include "render/shadows.hpp"
 #include "render/sky.hpp"
@@ -80,30 +82,16 @@ int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options
 }
 
 std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads) {
-    const Intersector& geometry = frame.geometry();
-    const std::vector<LightSource>& lights = frame.lights();
     std::vector<glm::dvec3> H(mesh.unknowns(), glm::dvec3(0));
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
         TraceCounters counters;
-        const InteriorList outside{};
         for (size_t v = begin; v < end; ++v) {
             const MeshVertex& mv = mesh.vertices[v];
             if (!needs_light(mv)) continue;
             const glm::dvec3 p = gather_origin(mesh, mv);
-            for (const LightSource& l : lights) {
-                LightSample ls;
-                // POV's radiosity rays see area lights as point lights at their centre.
-                if (!illuminate(l, p, ls)) continue;
-                for (size_t side = 0; side < 2; ++side) {
-                    const double c = glm::dot(side_normal(mv, side), ls.dir);
-                    if (c <= 0) continue;
-                    // POV's diffuse term: cos^brilliance (shading.cpp).
-                    glm::dvec3 lc = ls.colour * (mv.brilliance == 1 ? c : std::pow(c, mv.brilliance));
-                    if (!l.shadowless)
-                        lc *= shadow_filter(geometry, p, ls.dir, ls.distance, outside, counters);
-                    H[2 * v + side] += lc;
-                }
-            }
+            for (size_t side = 0; side < 2; ++side)
+                H[2 * v + side] = direct_light_at(frame.lights(), frame.geometry(), p,
+                                                  side_normal(mv, side), mv.brilliance, counters);
         }
     });
     return H;
@@ -134,7 +122,7 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
 GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
-                          uint64_t seed) {
+                          uint64_t seed, const UnmeshedSurfaces* unmeshed, int level) {
     GatherResult r;
     double inv_dist = 0, weight = 0;
     cast_rays(
@@ -144,7 +132,12 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
             inv_dist += w / std::max(t, 1e-9);
             weight += w;
         },
-        [&](const glm::dvec3& dir, double w) { r.G += w * background_radiance(scene, dir); });
+        [&](const glm::dvec3& dir, double w) { r.G += w * background_radiance(scene, dir); },
+        [&](const Hit& hit, const glm::dvec3& dir, double w) {
+            if (unmeshed) r.G += w * unmeshed->leaving(hit, dir, level);
+            inv_dist += w / std::max(hit.t, 1e-9);
+            weight += w;
+        });
     r.harmonic_distance = inv_dist > 0 ? weight / inv_dist : INFINITY;
     return r;
 }
@@ -207,7 +200,13 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     const scene::Scene& scene = frame.scene();
     const Intersector& geometry = frame.geometry();
     const std::vector<glm::dvec3> H = direct_light(frame, mesh, threads);
-    const VertexFormFactors F = vertex_form_factors(scene, mesh, geometry, options, threads);
+    // Surfaces without elements reflect the direct light into the solve (their own indirect
+    // light needs the solution: the display's point gathers add it).
+    PointGatherSettings direct_only;
+    direct_only.ambient_emission = ambient_emission(scene);
+    const PointGather unmeshed(frame, mesh, nullptr, direct_only);
+    const VertexFormFactors F =
+        vertex_form_factors(scene, mesh, geometry, options, threads, &unmeshed);
     info.form_factor_seconds = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     check_reflectance(mesh, info.warnings);

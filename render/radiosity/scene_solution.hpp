@@ -14,12 +14,23 @@
 
 #include "render/camera.hpp"
 #include "render/frame.hpp"
+#include "render/hit.hpp"
 #include "render/intersector.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace lumen::render::radiosity {
+
+// What a radiosity ray sees where it lands on a surface without elements (CSG other than
+// unions, shapes the mesher cannot cut, pure emitters): point_gather.hpp evaluates it there.
+class UnmeshedSurfaces {
+public:
+    virtual ~UnmeshedSurfaces() = default;
+    // The light leaving `hit` back along the ray (direction `dir`) of a gather at `level`
+    // (1: the gathers the camera's hits and the final gather make).
+    virtual glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const = 0;
+};
 
 // Sparse rows of vertex form factors: F[u][col] is the fraction of a cosine-weighted gather
 // from vertex side u that lands on the basis function of `col`; `env` the background light
@@ -58,9 +69,11 @@ std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& 
 // (ff_rays stratified cosine rays per vertex side), `analytic` (Lambert's point-to-polygon
 // value with sampled visibility for emitters and the elements within two patch sizes, rays
 // for the rest) or `hemicube` (hemicube_res, cast through the scene; the baseline).
+// Rays landing on surfaces without elements add what `unmeshed` says they leave to `env`.
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry,
-                                      const RadiosityOptions& options, int threads);
+                                      const RadiosityOptions& options, int threads,
+                                      const UnmeshedSurfaces* unmeshed = nullptr);
 
 // Which vertex sides the camera sees (one primary ray per pixel).
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
@@ -85,11 +98,13 @@ struct GatherResult {
 
 // Incident light at a point: `rays` stratified cosine rays from `origin` about the unit
 // `normal` (deterministic for `seed`); a hit returns B interpolated over the element it lands
-// on, a miss the background.
+// on, a miss the background, a surface without elements what `unmeshed` says it leaves
+// (nothing when null) for a gather at `level`.
 GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
-                          uint64_t seed);
+                          uint64_t seed, const UnmeshedSurfaces* unmeshed = nullptr,
+                          int level = 1);
 
 // The whole solution of the frame: direct light, form factors and the solve the options ask
 // for, all through the frame's geometry (the tracer's).

@@ -27,12 +27,18 @@ inline bool radiosity_hit(const Intersector& geometry, const Ray& ray, Hit& hit)
     return false;
 }
 
+// The default for rays landing where no element is: they count for nothing.
+struct IgnoreUnmeshed {
+    void operator()(const Hit&, const glm::dvec3&, double) const {}
+};
+
 // One ray of weight w: on_hit(element, unknown, share, t) for each vertex of the element it
-// lands on (barycentric share of w), on_miss(direction, w) when it escapes; a hit on an
-// object without elements absorbs.
-template <class OnHit, class OnMiss>
+// lands on (barycentric share of w), on_miss(direction, w) when it escapes,
+// on_unmeshed(hit, direction, w) when it lands on a surface without elements.
+template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed>
 void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
-               const glm::dvec3& dir, double w, OnHit&& on_hit, OnMiss&& on_miss) {
+               const glm::dvec3& dir, double w, OnHit&& on_hit, OnMiss&& on_miss,
+               OnUnmeshed&& on_unmeshed = {}) {
     Hit hit;
     if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
         on_miss(dir, w);
@@ -40,7 +46,10 @@ void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
     }
     glm::dvec3 bary;
     const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
-    if (e < 0) return;
+    if (e < 0) {
+        on_unmeshed(hit, dir, w);
+        return;
+    }
     const MeshElement& el = mesh.elements[size_t(e)];
     const uint32_t side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
     for (int k = 0; k < 3; ++k)
@@ -49,10 +58,10 @@ void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
 
 // `rays` stratified cosine-weighted rays (rounded to a square) from `origin` about the unit
 // `normal`, deterministic for `seed`, each of weight 1/rays.
-template <class OnHit, class OnMiss>
+template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed>
 void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& normal, uint64_t seed, int rays, OnHit&& on_hit,
-               OnMiss&& on_miss) {
+               OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}) {
     const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
     const double w = 1.0 / (cells * cells);
     std::mt19937_64 rng(seed);
@@ -61,7 +70,7 @@ void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
         for (int j = 0; j < cells; ++j) {
             const glm::dvec3 dir =
                 cosine_direction(normal, (i + U(rng)) / cells, (j + U(rng)) / cells);
-            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss);
+            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed);
         }
 }
 

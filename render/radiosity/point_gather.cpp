@@ -1,0 +1,67 @@
+#include "render/radiosity/point_gather.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+
+#include <glm/geometric.hpp>
+
+#include "render/radiosity/surface_light.hpp"
+
+namespace lumen::render::radiosity {
+
+PointGather::PointGather(const RenderFrame& frame, const SceneMesh& mesh,
+                         const std::vector<glm::dvec3>* B, const PointGatherSettings& settings)
+    : frame_(frame), mesh_(mesh), B_(B), s_(settings) {
+    if (!B_) return;
+    CacheSettings c = s_.cache;
+    for (int level = 1; level <= std::max(1, s_.bounces); ++level) {
+        caches_.push_back(std::make_unique<IrradianceCache>(c, mesh.bounds.hi));
+        c.error *= 2;  // deeper levels are seen through a gather: coarser is enough
+    }
+}
+
+glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level) const {
+    const SurfaceMaterial m = surface_material(hit.texture, hit.point, s_.ambient_emission);
+    if (m.rho == glm::dvec3(0)) return m.emission;
+    glm::dvec3 n = hit.normal;
+    if (glm::dot(n, dir) > 0) n = -n;  // the side the ray arrives on
+    // Lifted as the tracer lifts its shadow rays off a surface.
+    const glm::dvec3 p = hit.point + n * (1e-6 * std::max(1.0, mesh_.patch_size));
+    TraceCounters counters;
+    glm::dvec3 in = direct_light_at(frame_.lights(), frame_.geometry(), p, n, m.brilliance,
+                                    counters);
+    if (B_ && level < s_.bounces) in += incident(hit.point, n, level + 1);
+    return m.emission + m.rho * in;
+}
+
+glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int level) const {
+    IrradianceCache& cache = *caches_[size_t(std::clamp(level, 1, int(caches_.size())) - 1)];
+    glm::dvec3 g;
+    if (cache.lookup(p, n, g)) return g;
+    const auto t0 = std::chrono::steady_clock::now();
+    // Deterministic per point, whichever thread gets here first.
+    uint64_t seed = 0x9e3779b97f4a7c15ULL + uint64_t(level);
+    for (double x : {p.x, p.y, p.z, n.x, n.y, n.z})
+        seed = seed * 1099511628211ULL ^ std::hash<double>{}(x);
+    const int rays = level == 1 ? s_.rays : std::max(16, s_.rays / 4);
+    const GatherResult r =
+        gather_point(frame_.scene(), mesh_, frame_.geometry(), *B_,
+                     p + n * (1e-5 * mesh_.patch_size), n, rays, seed, this, level);
+    cache.insert(p, n, r.G, r.harmonic_distance);
+    if (level == 1)
+        gather_ns_ += uint64_t(std::chrono::duration<double, std::nano>(
+                                   std::chrono::steady_clock::now() - t0)
+                                   .count());
+    // The cache's faded average where the new record now covers p.
+    if (!cache.lookup(p, n, g)) g = r.G;
+    return g;
+}
+
+size_t PointGather::cache_points() const {
+    size_t n = 0;
+    for (const auto& c : caches_) n += c->size();
+    return n;
+}
+
+}  // namespace lumen::render::radiosity

@@ -1,0 +1,53 @@
+// Radiosity at any surface point, meshed or not. The patch solution covers what the mesher
+// can cut; a point elsewhere (CSG other than unions, shapes without a mesher, pure emitters)
+// gets its incident light from a gather of its own through an irradiance cache, and what a
+// gather ray sees where it lands on such a surface is evaluated there, as POV-Ray evaluates
+// every surface its radiosity rays hit: E + ρ (H + G), with G a gather one level deeper while
+// the level is within the bounce count (POV's recursion_limit).
+#pragma once
+#include <atomic>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/frame.hpp"
+#include "render/radiosity/irradiance_cache.hpp"
+#include "render/radiosity/scene_mesh.hpp"
+#include "render/radiosity/scene_solution.hpp"
+
+namespace lumen::render::radiosity {
+
+struct PointGatherSettings {
+    int rays = 256;            // rays of a level-1 gather; deeper levels shoot a quarter
+    int bounces = 1;           // the deepest level that gathers
+    CacheSettings cache;       // level 1's; deeper levels reuse twice as far
+    glm::dvec3 ambient_emission{0};  // surface_light.hpp
+};
+
+class PointGather final : public UnmeshedSurfaces {
+public:
+    // `B` null: no solution yet (the solve's own gathers), so surfaces without elements
+    // leave only E + ρH. Everything passed must outlive the object.
+    PointGather(const RenderFrame& frame, const SceneMesh& mesh, const std::vector<glm::dvec3>* B,
+                const PointGatherSettings& settings);
+
+    glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const override;
+
+    // Incident indirect light at surface point p on the side of unit normal n, for a gather
+    // of `level` (1: a camera hit), through that level's cache. Needs B.
+    glm::dvec3 incident(const glm::dvec3& p, const glm::dvec3& n, int level) const;
+
+    size_t cache_points() const;
+    double gather_seconds() const { return gather_ns_.load() * 1e-9; }
+
+private:
+    const RenderFrame& frame_;
+    const SceneMesh& mesh_;
+    const std::vector<glm::dvec3>* B_;
+    PointGatherSettings s_;
+    std::vector<std::unique_ptr<IrradianceCache>> caches_;  // per level, 1 first
+    mutable std::atomic<uint64_t> gather_ns_{0};
+};
+
+}  // namespace lumen::render::radiosity

@@ -1,0 +1,42 @@
+// What radiosity needs of a surface at one point, meshed or not: the top layer's diffuse
+// reflectance ρ (diffuse × pigment), emission E and brilliance, and the direct light H as
+// POV-Ray's radiosity rays see it.
+#pragma once
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/intersector.hpp"
+#include "render/lights.hpp"
+#include "render/trace_state.hpp"
+#include "scene/scene.hpp"
+
+namespace lumen::render::radiosity {
+
+struct SurfaceMaterial {
+    glm::dvec3 rho{0};       // diffuse × pigment × opacity
+    glm::dvec3 emission{0};  // (emission + ambient as emission) × pigment × opacity
+    double brilliance = 1;   // direct light goes with cos^brilliance
+};
+
+// POV-Ray 3.7 lets `ambient` act as emission under radiosity in scenes of #version < 3.7
+// (a plane of ambient 0.2 under a sky of ambient 1 shows both terms; from 3.7 on ambient is
+// 0): the factor ambient is multiplied by, ambient_light there and 0 from 3.7 on.
+glm::dvec3 ambient_emission(const scene::Scene& scene);
+
+// The material of the top layer of `texture` at world point p.
+SurfaceMaterial surface_material(const scene::LayeredTexture* texture, const glm::dvec3& p,
+                                 const glm::dvec3& ambient_emission);
+
+// True when the top layer has diffuse 0 wherever it is (every texture_map entry too): such a
+// surface only emits, and needs no light of its own.
+bool never_diffuse(const scene::LayeredTexture* texture);
+
+// Direct light reaching point p (already lifted off the surface) on the side of unit normal n:
+// POV's radiosity rays see area lights as point lights at their centre, spotlight falloff and
+// fade apply, shadows are traced, the diffuse term goes with cos^brilliance.
+glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Intersector& geometry,
+                           const glm::dvec3& p, const glm::dvec3& n, double brilliance,
+                           TraceCounters& counters);
+
+}  // namespace lumen::render::radiosity
