@@ -35,6 +35,10 @@ ReceiverMesh::ReceiverMesh(const SceneMesh& mesh) : mesh_(mesh) {
         normals_.push_back(v.normal);
         origins_.push_back(gather_origin(mesh, v));
     }
+    objects_.assign(n, nullptr);
+    for (const MeshElement& e : mesh.elements)
+        for (uint32_t v : e.v) objects_[v] = e.object;
+    reach_.assign(n, 1e-2 * mesh.patch_size);  // corners lie on the surface
     G.assign(2 * n, glm::dvec3(0));
     leaves.reserve(mesh.elements.size());
     for (const MeshElement& e : mesh.elements) leaves.push_back({e.v, 0, 0});
@@ -54,6 +58,9 @@ uint32_t ReceiverMesh::midpoint(uint32_t a, uint32_t b, uint32_t c) {
     positions_.push_back(p);
     normals_.push_back(n);
     origins_.push_back(p + in * (1e-3 * mesh_.patch_size));
+    objects_.push_back(objects_[a]);
+    // A chord of an arc of up to 90 degrees is at most 0.21 of its length off the arc.
+    reach_.push_back(0.5 * glm::length(positions_[b] - positions_[a]));
     for (uint32_t side = 0; side < 2; ++side) G.push_back(0.5 * (G[2 * a + side] + G[2 * b + side]));
     return it->second;
 }
@@ -149,9 +156,14 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
         parallel_for(unknowns.size(), threads, [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
                 const uint32_t u = unknowns[i], v = u / 2;
-                const glm::dvec3 n = u % 2 ? -r.normal(v) : r.normal(v);
-                r.G[u] = gather_point(scene, mesh, geometry, B, r.origin(v), n, rays,
-                                      side_seed(u), unmeshed).G;
+                // From the true surface, about its normal: a gather from a curved shape's
+                // chord starts inside the shape, and one about the chord's normal sends rays
+                // into it.
+                glm::dvec3 origin = r.origin(v), n = r.normal(v);
+                onto_surface(geometry, r.object(v), origin, n, r.reach(v));
+                if (u % 2) n = -n;
+                r.G[u] = gather_point(scene, mesh, geometry, B, origin, n, rays, side_seed(u),
+                                      unmeshed).G;
             }
         });
     };

@@ -50,10 +50,16 @@ public:
     // Where the gathers of vertex v start and its front (side 0) normal.
     const glm::dvec3& origin(uint32_t v) const { return origins_[v]; }
     const glm::dvec3& normal(uint32_t v) const { return normals_[v]; }
+    // The primitive vertex v lies on, and how far its point may be off that primitive's true
+    // surface (a midpoint of a curved shape's chord lies inside it).
+    const scene::Object* object(uint32_t v) const { return objects_[v]; }
+    double reach(uint32_t v) const { return reach_[v]; }
 
 private:
     const SceneMesh& mesh_;
     std::vector<glm::dvec3> positions_, normals_, origins_;  // origins_: where gathers start
+    std::vector<const scene::Object*> objects_;
+    std::vector<double> reach_;
     std::unordered_map<uint64_t, uint32_t> midpoints_;       // edge (lo, hi) -> vertex
 };
 

@@ -81,6 +81,24 @@ int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options
     return std::clamp(rl, 1, 20);
 }
 
+bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
+                  glm::dvec3& n, double reach) {
+    const Ray probe{p + n * reach, -n};
+    double t_min = 0;
+    for (int i = 0; i < 8; ++i) {
+        Hit hit;
+        if (!geometry.intersect(probe, t_min, 2 * reach, hit, Query::All)) return false;
+        const double c = glm::dot(hit.normal, n);
+        if (hit.object == object && std::fabs(c) > 0.5 && std::isfinite(c)) {
+            p = hit.point;
+            n = c > 0 ? hit.normal : -hit.normal;
+            return true;
+        }
+        t_min = hit.t;
+    }
+    return false;
+}
+
 std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads) {
     std::vector<glm::dvec3> H(mesh.unknowns(), glm::dvec3(0));
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {

@@ -84,6 +84,14 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
 inline glm::dvec3 gather_origin(const SceneMesh& mesh, const MeshVertex& v) {
     return v.position + v.inward * (1e-3 * mesh.patch_size);
 }
+// The true surface under point p of a flat element with front normal n: a curved shape's
+// elements are chords, inside the surface away from their corners, and their normal is off
+// the surface's. A probe along -n from `reach` above p takes the first hit whose normal is
+// within 60 degrees of ±n, on `object`, and at most `reach` below p; p and n (kept on n's side) become that
+// hit on `object`'s. False, with p and n unchanged, when there is none.
+bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
+                  glm::dvec3& n, double reach);
+
 inline glm::dvec3 side_normal(const MeshVertex& v, size_t side) {
     return side ? -v.normal : v.normal;
 }
