@@ -1,6 +1,7 @@
 // The radiosity mesh's stability reports on scenes read from SDL: coincident surfaces facing
 // the same way and sliver elements are reported with their source locations; a box resting
-// on a floor (surfaces in contact, facing each other) and a plain room are not.
+// on a floor (surfaces in contact, facing each other), surfaces sharing an edge and overlaps of
+// one material are not.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -47,6 +48,26 @@ TEST(RadiosityMeshChecks, ABoxRestingOnAFloorIsNotReported) {
         "box { <-1, 0, -1>, <1, 1, 1> pigment { rgb 0.7 } }\n");
     EXPECT_EQ(count_containing(w, "coincides"), 0);
     EXPECT_EQ(count_containing(w, "sliver"), 0);
+}
+
+// rad_def_test_37.pov's rim: boxes of one union overlap at the corners, their faces coplanar
+// and of one material; and boxes side by side share only an edge of their top faces.
+TEST(RadiosityMeshChecks, OverlapsOfOneMaterialAndSharedEdgesAreNotReported) {
+    const auto w = mesh_warnings(
+        "union { box { <0, 0, 0>, <0.2, 0.16, 0.2> } box { <0, 0, 0>, <0.16, 0.2, 0.2> }\n"
+        "        pigment { rgb 0.5 } }\n"
+        "box { <1, 0, 0>, <2, 1, 1> pigment { rgb 0.3 } }\n"
+        "box { <2, 0, 0>, <3, 1, 1> pigment { rgb 0.6 } }\n"
+        "box { <-3.2, -0.2, -3>, <3.2, 0, 3.2> pigment { rgb 0.8 } }\n"
+        "box { <-3.2, 0, -3>, <-3, 2, 3.2> pigment { rgb <0.8, 0.2, 0.2> } }\n");
+    EXPECT_EQ(count_containing(w, "coincides"), 0);
+}
+
+TEST(RadiosityMeshChecks, OverlapsOfDifferentMaterialsAreReported) {
+    const auto w = mesh_warnings(
+        "box { <0, 0, 0>, <0.2, 0.16, 0.2> pigment { rgb 0.5 } }\n"
+        "box { <0, 0, 0>, <0.16, 0.2, 0.2> pigment { rgb 0.6 } }\n");
+    EXPECT_GE(count_containing(w, "coincides"), 1);
 }
 
 TEST(RadiosityMeshChecks, SliverTrianglesAreReported) {

@@ -45,6 +45,25 @@ bool contains(const SceneMesh& m, const MeshElement& e, const glm::dvec3& p, dou
     return true;
 }
 
+// Mean reflectance and emission over the element's corners.
+std::pair<glm::dvec3, glm::dvec3> material(const SceneMesh& m, const MeshElement& e) {
+    glm::dvec3 rho(0), emission(0);
+    for (uint32_t v : e.v) {
+        rho += m.vertices[v].rho / 3.0;
+        emission += m.vertices[v].emission / 3.0;
+    }
+    return {rho, emission};
+}
+
+// Coincident surfaces of one material (the overlapping boxes of a union, say) look and light
+// the same whichever a ray meets: not worth a warning.
+bool same_material(const SceneMesh& m, const MeshElement& e, const MeshElement& f) {
+    const auto [rho_e, em_e] = material(m, e);
+    const auto [rho_f, em_f] = material(m, f);
+    const glm::dvec3 d = glm::abs(rho_e - rho_f) + glm::abs(em_e - em_f);
+    return std::max({d.x, d.y, d.z}) < 1e-6;
+}
+
 struct CellKey {
     long x, y, z;
     bool operator==(const CellKey&) const = default;
@@ -97,6 +116,7 @@ void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
                         const double off = glm::dot(centroid[i] - corner(m, f, 0), f.normal);
                         if (std::fabs(off) > plane_tol) continue;
                         if (!contains(m, f, centroid[i], plane_tol)) continue;
+                        if (same_material(m, e, f)) continue;
                         pairs[earlier(e.object, f.object) ? std::pair(e.object, f.object)
                                                           : std::pair(f.object, e.object)] = true;
                     }
