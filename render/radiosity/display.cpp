@@ -13,10 +13,14 @@ namespace lumen::render::radiosity {
 namespace {
 
 // The element a surface hit lies on: a short probe along the normal through the hit point.
+// An element turned more than 45 degrees from the surface there is not the hit's (the far
+// side of a thin tube, found near a silhouette): -1, and the point gathers for itself.
 long element_at(const SceneMesh& mesh, const Hit& hit, const glm::dvec3& normal,
                 glm::dvec3& bary) {
     const double d = 1e-4 * mesh.patch_size;
-    return mesh.find(hit.point + d * normal, -normal, d, d + 1e-9, hit.object, bary);
+    const long e = mesh.find(hit.point + d * normal, -normal, d, d + 1e-9, hit.object, bary);
+    if (e >= 0 && std::fabs(glm::dot(mesh.elements[size_t(e)].normal, normal)) < 0.7) return -1;
+    return e;
 }
 
 glm::dvec3 interpolate_at(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, long e,
@@ -38,7 +42,7 @@ public:
         const long e = element_at(mesh_, hit, normal, bary);
         if (e < 0) return points_ ? apply_knobs(s_, points_->incident(hit.point, normal, 1))
                                   : glm::dvec3(0);
-        const uint32_t side = glm::dot(normal, mesh_.elements[size_t(e)].normal) > 0 ? 0 : 1;
+        const uint32_t side = seen_side(mesh_.elements[size_t(e)], hit.normal, normal);
         return apply_knobs(s_, receivers_.value(e, bary, side));
     }
 
@@ -96,7 +100,7 @@ bool interpolate(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, c
     glm::dvec3 bary;
     const long e = element_at(mesh, hit, normal, bary);
     if (e < 0) return false;
-    out = interpolate_at(mesh, values, e, bary, glm::dot(normal, mesh.elements[size_t(e)].normal) > 0);
+    out = interpolate_at(mesh, values, e, bary, seen_side(mesh.elements[size_t(e)], hit.normal, normal) == 0);
     return true;
 }
 
@@ -114,7 +118,9 @@ std::unique_ptr<IndirectLight> make_gather(const PointGather& points,
 PointGatherSettings point_gather_settings(const scene::Scene& scene, const DisplaySettings& s,
                                           int bounces) {
     PointGatherSettings p;
-    p.rays = s.gather_rays;
+    // These gathers are seen directly, one per cache record, with no smoothing after them:
+    // fewer rays show as noise (radiosity_37.pov's walls at count 50).
+    p.rays = std::max(256, s.gather_rays);
     p.bounces = std::max(1, bounces);
     p.cache = {s.cache_error, s.min_reuse, s.max_reuse, s.camera};
     p.ambient_emission = ambient_emission(scene);

@@ -17,7 +17,7 @@ struct SubdivisionOptions {
     // `tolerance` × (their mean + 1/10 of the mean G the camera sees).
     double tolerance = 0.2;
     double min_element = 0;  // no split below this edge length; 0: patch size / 8
-    double budget = 0.5;     // new vertices at most this × the vertex sides gathered
+    double budget = 2;       // new vertices at most this × the vertex sides gathered
 };
 
 struct RadiosityOptions {

@@ -35,6 +35,17 @@ struct MeshElement {
     const scene::Object* object = nullptr;  // the primitive (as a tracer Hit names it)
 };
 
+// The side of element `el` (0 front) that a viewer in direction `towards` sees at a surface
+// point of geometric normal `surface_normal`: judged by the true surface, not the element's
+// plane, since near a curved shape's silhouette its chord can face away from a viewer whom
+// the surface faces.
+inline uint32_t seen_side(const MeshElement& el, const glm::dvec3& surface_normal,
+                          const glm::dvec3& towards) {
+    const bool viewer_above = glm::dot(towards, surface_normal) > 0;
+    const bool front_above = glm::dot(el.normal, surface_normal) > 0;
+    return viewer_above == front_above ? 0 : 1;
+}
+
 struct SceneMesh {
     std::vector<MeshVertex> vertices;
     std::vector<MeshElement> elements;

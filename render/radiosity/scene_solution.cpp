@@ -131,7 +131,7 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
             const long e = mesh.find(ray.origin, ray.dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
             if (e < 0) continue;
             const MeshElement& el = mesh.elements[size_t(e)];
-            const uint32_t side = glm::dot(ray.dir, el.normal) < 0 ? 0 : 1;
+            const uint32_t side = seen_side(el, hit.normal, -ray.dir);
             for (uint32_t v : el.v) seen[2 * v + side] = 1;
         }
     return seen;
@@ -249,7 +249,11 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     info.method = method_name(method);
 
     std::vector<glm::dvec3> B(n);
-    for (size_t u = 0; u < n; ++u) B[u] = leaving(u, F.env[u]);  // B⁰
+    // B⁰: what leaves before any bounce. Bounce-limited, it is E + ρH alone, as POV's
+    // deepest radiosity rays see a surface: the sky's light (env) arrives with the first
+    // gather, like every other surface's, so recursion_limit 1 gets one bounce of it, not two.
+    const bool limited = method == Method::Jacobi && sol.bounces > 0;
+    for (size_t u = 0; u < n; ++u) B[u] = leaving(u, limited ? glm::dvec3(0) : F.env[u]);
     if (method == Method::Jacobi) {
         if (sol.bounces > 0) info.iterations = 1;  // reported as bounces: the last is G
         // Sparse sweeps: one bounce each; bounce-limited (POV) or until the change is small.

@@ -51,7 +51,7 @@ void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
         return;
     }
     const MeshElement& el = mesh.elements[size_t(e)];
-    const uint32_t side = glm::dot(dir, el.normal) < 0 ? 0 : 1;
+    const uint32_t side = seen_side(el, hit.normal, -dir);
     for (int k = 0; k < 3; ++k)
         if (bary[k] > 0) on_hit(e, 2 * el.v[k] + side, w * bary[k], hit.t);
 }
