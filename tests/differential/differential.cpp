@@ -127,11 +127,13 @@ int run_scene(const SceneEntry& e, const fs::path& out, const std::string& lumen
     return r.passed ? 0 : 1;
 }
 
-// Prints "PSNR MAX_ERROR DIFFERING_FRACTION" of two images (PSNR "inf" when identical).
+// Prints "PSNR MAX_ERROR DIFFERING_FRACTION MEAN_ERROR DARK_WHERE_LIT" of two images (PSNR
+// "inf" when identical; image_compare.hpp).
 int compare_only(const std::string& reference, const std::string& candidate, const std::string& heat) {
     try {
         const Comparison c = compare_images(reference, candidate, heat);
-        std::printf("%.4f %d %.6f\n", c.psnr, c.max_error, c.differing_fraction);
+        std::printf("%.4f %d %.6f %.6f %d\n", c.psnr, c.max_error, c.differing_fraction,
+                    c.mean_error, c.dark_where_lit);
         return 0;
     } catch (const std::exception& ex) {
         std::cerr << "differential: " << ex.what() << "\n";

@@ -50,6 +50,25 @@ void write_rgb8(const std::string& path, int w, int h, const std::vector<unsigne
     out->close();
 }
 
+int largest_channel(const Rgb8& img, int x, int y) {
+    const unsigned char* p = &img.pixels[(size_t(y) * img.width + x) * 3];
+    return std::max({p[0], p[1], p[2]});
+}
+
+int dark_where_lit(const Rgb8& reference, const Rgb8& candidate) {
+    int count = 0;
+    for (int y = 1; y + 1 < reference.height; ++y)
+        for (int x = 1; x + 1 < reference.width; ++x) {
+            if (largest_channel(candidate, x, y) > 4) continue;
+            bool lit = true;
+            for (int dy = -1; dy <= 1 && lit; ++dy)
+                for (int dx = -1; dx <= 1 && lit; ++dx)
+                    lit = largest_channel(reference, x + dx, y + dy) >= 32;
+            count += lit;
+        }
+    return count;
+}
+
 }  // namespace
 
 Comparison compare_images(const std::string& reference, const std::string& candidate,
@@ -61,7 +80,7 @@ Comparison compare_images(const std::string& reference, const std::string& candi
                                  "x" + std::to_string(b.height));
     Comparison c{a.width, a.height};
     std::vector<unsigned char> heat(a.pixels.size());
-    double squared = 0;
+    double squared = 0, absolute = 0;
     size_t differing = 0;
     const size_t n = size_t(a.width) * a.height;
     for (size_t p = 0; p < n; ++p) {
@@ -69,6 +88,7 @@ Comparison compare_images(const std::string& reference, const std::string& candi
         for (int ch = 0; ch < 3; ++ch) {
             const int d = std::abs(int(a.pixels[p * 3 + ch]) - int(b.pixels[p * 3 + ch]));
             squared += double(d) * d;
+            absolute += d;
             worst = std::max(worst, d);
         }
         c.max_error = std::max(c.max_error, worst);
@@ -79,6 +99,8 @@ Comparison compare_images(const std::string& reference, const std::string& candi
     c.psnr = mse == 0 ? std::numeric_limits<double>::infinity()
                       : 10 * std::log10(255.0 * 255.0 / mse);
     c.differing_fraction = double(differing) / double(n);
+    c.mean_error = absolute / 255.0 / double(n * 3);
+    c.dark_where_lit = dark_where_lit(a, b);
     write_rgb8(heat_map_path, a.width, a.height, heat);
     return c;
 }
