@@ -1,7 +1,6 @@
 // camera { } with POV's fix-up order, so the renderer only maps
 // pixels to rays.
 #include <cmath>
-#include <functional>
 #include <iterator>
 #include <optional>
 
@@ -69,9 +68,7 @@ void check_basis(ItemCursor& cur, const scene::Camera& cam, const VectorLocs& at
 
 // mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { } ... [smooth] }, with POV-Ray's rules
 // on how many rays each distribution takes.
-scene::Camera::MeshRays read_mesh_camera(BuildContext& ctx, const BlockValue& block,
-                                         const std::function<void(const std::string&, SourceLoc)>&
-                                             unsupported) {
+scene::Camera::MeshRays read_mesh_camera(BuildContext& ctx, const BlockValue& block) {
     ItemCursor cur(ctx, block);
     scene::Camera::MeshRays m;
     const double rays = cur.expect_float("mesh_camera");
@@ -101,8 +98,10 @@ scene::Camera::MeshRays read_mesh_camera(BuildContext& ctx, const BlockValue& bl
         cur.fail(rays_loc, "mesh_camera distributions 2 and 3 take one ray per pixel");
     if (m.distribution == 0 && size_t(m.rays) > m.meshes.size())
         cur.fail(rays_loc, "mesh_camera distribution 0 needs a mesh for each ray");
-    if (m.distribution == 3) unsupported("mesh_camera distribution 3 (uv baking)", dist_loc);
+    if (m.distribution == 3 && m.meshes.size() > 1)
+        cur.warn(block.loc, "mesh_camera distribution 3 uses only the first mesh");
     if (smooth && m.distribution != 3) cur.warn(block.loc, "mesh_camera 'smooth' is only for distribution 3");
+    m.smooth = smooth && m.distribution == 3;
     return m;
 }
 
@@ -140,7 +139,7 @@ scene::Camera build_camera(ItemCursor& cur) {
         }
         if (const BlockValue* b = block_of(item, "mesh_camera")) {
             cam.type = scene::CameraType::MeshCamera;
-            cam.mesh = read_mesh_camera(cur.ctx(), *b, unsupported);
+            cam.mesh = read_mesh_camera(cur.ctx(), *b);
             type_given = true;
             continue;
         }

@@ -79,11 +79,11 @@ TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
         "#declare P = pigment { image_map { png \"a.png\" } }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
-        "camera { mesh_camera { 1 3 mesh { triangle { 0, x, y } } } }\n"
+        "sphere { 0, 1 interior { media { } } }\n"
         "isosurface { function { x } }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
     EXPECT_EQ(s.unsupported[0].feature, "image_map");
-    EXPECT_EQ(s.unsupported[1].feature, "mesh_camera distribution 3 (uv baking)");
+    EXPECT_EQ(s.unsupported[1].feature, "media");
     EXPECT_EQ(s.unsupported[2].feature, "isosurface");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);
 }

@@ -1,9 +1,11 @@
 #include "render/camera.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "render/normal.hpp"
@@ -50,7 +52,117 @@ CameraModel::CameraModel(const scene::Camera& camera, int width, int height)
             meshes_.back().faces.push_back(
                 {(a + b + c) / 3.0, unit_or_zero(glm::cross(c - a, b - a))});
         }
+        if (m.distribution == 3) {  // POV-Ray uses only the first mesh
+            index_uv_cells(*mesh);
+            break;
+        }
     }
+}
+
+namespace {
+
+// POV-Ray's uv buckets: tenths, truncated towards zero, the last one open upwards. Its faces
+// below u = -0.1 would fall outside the table; no sample lies there.
+int pov_bucket(double t) { return std::clamp(int(std::clamp(t * 10, -1e9, 1e9)), 0, 9); }
+
+glm::dvec2 corner_uv(const scene::Mesh& mesh, int i) {
+    return i >= 0 && size_t(i) < mesh.uvs.size() ? mesh.uvs[size_t(i)] : glm::dvec2(0);
+}
+
+// Twice the uv triangle's signed area.
+double uv_scale(const std::array<glm::dvec2, 3>& p) {
+    return (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+}
+
+// The uv's barycentric weights in the face's uv triangle, with POV-Ray's formulas (so that
+// samples on shared edges go to the same face), or false for a degenerate uv triangle (POV
+// would start a ray at a NaN origin).
+bool uv_weights(const std::array<glm::dvec2, 3>& p, double u, double v, glm::dvec3& b) {
+    const double scale = uv_scale(p);
+    if (!(scale != 0) || !std::isfinite(scale)) return false;
+    b[0] = ((p[1].x - u) * (p[2].y - v) - (p[2].x - u) * (p[1].y - v)) / scale;
+    b[1] = ((p[2].x - u) * (p[0].y - v) - (p[0].x - u) * (p[2].y - v)) / scale;
+    b[2] = ((p[0].x - u) * (p[1].y - v) - (p[1].x - u) * (p[0].y - v)) / scale;
+    return true;
+}
+
+}  // namespace
+
+void CameraModel::index_uv_cells(const scene::Mesh& mesh) {
+    uv_mesh_ = &mesh;
+    const size_t n = mesh.faces.size();
+    // POV-Ray's 10 x 10 buckets, each split k x k so that a cell holds a few faces of a mesh
+    // spread evenly over the unit square. A face is listed where its POV bucket range allows
+    // and its uv bounds (widened a little, for rounding on the edges) reach, so every face
+    // POV-Ray would find at a sample is a candidate there and no other.
+    const int k = std::clamp(int(std::ceil(std::sqrt(double(n) / 100))), 1, 64);
+    cells_ = 10 * k;
+    struct Span { int u0, u1, v0, v1; };
+    std::vector<Span> spans(n, Span{0, -1, 0, -1});
+    std::vector<uint32_t> count(size_t(cells_) * cells_ + 1, 0);
+    auto range = [&](double lo, double hi, int& a, int& b) {
+        const double g = cells_;
+        a = std::max(int(std::clamp(std::floor(lo * g - 0.01), 0.0, g)), pov_bucket(lo) * k);
+        b = std::min(int(std::clamp(std::floor(hi * g + 0.01), 0.0, g - 1)), pov_bucket(hi) * k + k - 1);
+    };
+    for (size_t i = 0; i < n; ++i) {
+        const scene::Mesh::Face& f = mesh.faces[i];
+        if (meshes_.front().faces[i].normal == glm::dvec3(0)) continue;  // POV-Ray drops these
+        const std::array<glm::dvec2, 3> p{corner_uv(mesh, f.uv[0]), corner_uv(mesh, f.uv[1]),
+                                          corner_uv(mesh, f.uv[2])};
+        const double scale = uv_scale(p);
+        if (!(scale != 0) || !std::isfinite(scale)) continue;
+        const glm::dvec2 lo = glm::min(p[0], glm::min(p[1], p[2]));
+        const glm::dvec2 hi = glm::max(p[0], glm::max(p[1], p[2]));
+        Span& s = spans[i];
+        range(lo.x, hi.x, s.u0, s.u1);
+        range(lo.y, hi.y, s.v0, s.v1);
+        for (int cv = s.v0; cv <= s.v1; ++cv)
+            for (int cu = s.u0; cu <= s.u1; ++cu) ++count[size_t(cv) * cells_ + cu + 1];
+    }
+    for (size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    cell_start_ = count;
+    cell_faces_.resize(count.back());
+    for (size_t i = 0; i < n; ++i) {  // in mesh order, so each cell's list is too
+        const Span& s = spans[i];
+        for (int cv = s.v0; cv <= s.v1; ++cv)
+            for (int cu = s.u0; cu <= s.u1; ++cu) cell_faces_[count[size_t(cv) * cells_ + cu]++] = uint32_t(i);
+    }
+}
+
+bool CameraModel::uv_ray(double u, double v, glm::dvec3& origin, glm::dvec3& dir) const {
+    if (!uv_mesh_ || !std::isfinite(u) || !std::isfinite(v)) return false;
+    const scene::Mesh& mesh = *uv_mesh_;
+    // The sample's cell, kept inside the POV bucket it falls in.
+    const int k = cells_ / 10;
+    auto cell = [&](double t) {
+        const int c = pov_bucket(t);
+        return std::clamp(int(std::clamp(std::floor(t * cells_), 0.0, double(cells_))), c * k,
+                          c * k + k - 1);
+    };
+    const size_t c = size_t(cell(v)) * cells_ + cell(u);
+    for (uint32_t j = cell_start_[c]; j < cell_start_[c + 1]; ++j) {
+        const scene::Mesh::Face& f = mesh.faces[cell_faces_[j]];
+        glm::dvec3 b;
+        if (!uv_weights({corner_uv(mesh, f.uv[0]), corner_uv(mesh, f.uv[1]), corner_uv(mesh, f.uv[2])}, u,
+                        v, b) ||
+            b[0] < 0 || b[1] < 0 || b[2] < 0)
+            continue;
+        origin = mesh.vertices[f.v[0]] * b[0] + mesh.vertices[f.v[1]] * b[1] + mesh.vertices[f.v[2]] * b[2];
+        dir = meshes_.front().faces[cell_faces_[j]].normal;
+        const bool has_normals = std::all_of(f.n.begin(), f.n.end(), [&](int i) {
+            return i >= 0 && size_t(i) < mesh.normals.size();
+        });
+        if (camera_.mesh->smooth && has_normals) {
+            // POV-Ray blends the unit vertex normals and leaves the blend unnormalised (it
+            // scales the location.z offset).
+            glm::dvec3 blend(0);
+            for (int i = 0; i < 3; ++i) blend += b[i] * unit_or_zero(mesh.normals[size_t(f.n[i])]);
+            if (glm::dot(blend, blend) > 0) dir = blend;
+        }
+        return true;
+    }
+    return false;
 }
 
 bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
@@ -61,6 +173,7 @@ bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
     const double cx = std::clamp(x + 0.5, 0.0, width_ - 1), cy = std::clamp(y - 0.5, 0.0, height_ - 1);
     size_t mesh = 0;
     long long face = 0;
+    glm::dvec3 origin, dir;
     switch (m.distribution) {
         case 0:  // ray k on mesh k, one face per pixel
             mesh = size_t(k);
@@ -71,21 +184,30 @@ bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
                        meshes_.empty() ? 0 : meshes_[0].faces.size());
             break;
         }
-        default: {  // 2: the meshes side by side, each W / n columns wide
+        case 2: {  // the meshes side by side, each W / n columns wide
             const int columns = std::max(1, w / int(std::max<size_t>(1, meshes_.size())));
             mesh = size_t(cx / (width_ / double(meshes_.size())));
             face = (long long)(cy) * columns + (long long)(cx);
             break;
         }
+        default:  // 3: the pixel's place in the uv map, v upwards
+            if (meshes_.empty() || !uv_ray((cx - 0.5) / width_, 1 - (cy + 0.5) / height_, origin, dir))
+                return false;
+            break;
     }
-    if (mesh >= meshes_.size() || face < 0 || size_t(face) >= meshes_[mesh].faces.size())
-        return false;
-    const Face& f = meshes_[mesh].faces[size_t(face)];
-    glm::dvec3 origin = f.centre + m.offset * f.normal;
-    glm::dvec3 dir = m.reverse ? -f.normal : f.normal;
+    if (m.distribution != 3) {
+        if (mesh >= meshes_.size() || face < 0 || size_t(face) >= meshes_[mesh].faces.size())
+            return false;
+        const Face& f = meshes_[mesh].faces[size_t(face)];
+        origin = f.centre;
+        dir = f.normal;
+    }
+    origin += m.offset * dir;
+    if (m.reverse) dir = -dir;
+    // POV-Ray moves the direction as a normal (the inverse transpose).
     const scene::Transform& xf = meshes_[mesh].to_world;
     ray.origin = xf.point(origin);
-    ray.dir = xf.vector(dir);
+    ray.dir = xf.normal(dir);
     return true;
 }
 

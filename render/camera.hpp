@@ -1,6 +1,7 @@
 // Pixel -> primary ray (POV-Ray 3.7's rules). The scene camera arrives fixed up by the
 // interpreter (angle, look_at, orthographic scaling, transforms), so this is only the mapping.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -9,6 +10,10 @@
 #include "render/ray.hpp"
 #include "scene/camera.hpp"
 #include "scene/transform.hpp"
+
+namespace lumen::scene {
+struct Mesh;  // scene/shapes.hpp
+}
 
 namespace lumen::render {
 
@@ -35,6 +40,10 @@ private:
     bool project(double x, double y, Ray& ray, glm::dvec3& normal_point) const;
     // mesh_camera: the face a ray starts on, POV-Ray's face numbering per distribution.
     bool mesh_ray(double x, double y, int k, Ray& ray) const;
+    // Distribution 3: the point of the first mesh whose uv is (u, v), and its normal (the
+    // vertex normals blended with `smooth`, not normalised); false where no face covers it.
+    bool uv_ray(double u, double v, glm::dvec3& origin, glm::dvec3& dir) const;
+    void index_uv_cells(const scene::Mesh& mesh);
 
     struct Face {
         glm::dvec3 centre, normal;  // object space; normal unit length
@@ -44,6 +53,12 @@ private:
         scene::Transform to_world;
     };
     std::vector<MeshFaces> meshes_;  // distribution 1: one list, all meshes' faces in order
+    // Distribution 3: the first mesh, and a uv grid of cells_ x cells_ over [0, 1)^2 (the
+    // border cells reach out to infinity), each cell listing in mesh order the faces whose uv
+    // bounds touch it, so that a cell's first containing face is the mesh's first.
+    const scene::Mesh* uv_mesh_ = nullptr;
+    int cells_ = 0;
+    std::vector<uint32_t> cell_start_, cell_faces_;
     int rays_per_sample_ = 1;
 
     scene::Camera camera_;

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -177,6 +181,147 @@ TEST(Camera, MeshCameraRaysLeaveTheFacesInPovRaysOrder) {
     const CameraModel back(c, 4, 3);
     EXPECT_NEAR(back.ray(0, 0)->dir.z, -1, 1e-12);
     EXPECT_NEAR(back.ray(0, 0)->origin.x, 5, 1e-12);
+}
+
+// Distribution 3 (uv baking): a mesh whose faces are given with their 3D corners and uvs.
+struct UvFace {
+    std::array<glm::dvec3, 3> p;
+    std::array<glm::dvec2, 3> uv;
+};
+std::shared_ptr<scene::Object> uv_mesh(const std::vector<UvFace>& faces,
+                                       const std::vector<std::array<glm::dvec3, 3>>& normals = {}) {
+    auto obj = std::make_shared<scene::Object>();
+    scene::Mesh m;
+    for (size_t i = 0; i < faces.size(); ++i) {
+        scene::Mesh::Face f;
+        for (int c = 0; c < 3; ++c) {
+            f.v[c] = f.uv[c] = int(m.vertices.size());
+            m.vertices.push_back(faces[i].p[c]);
+            m.uvs.push_back(faces[i].uv[c]);
+            if (i < normals.size()) {
+                f.n[c] = int(m.normals.size());
+                m.normals.push_back(normals[i][c]);
+            }
+        }
+        m.faces.push_back(f);
+    }
+    obj->shape = std::move(m);
+    return obj;
+}
+
+scene::Camera uv_camera(std::shared_ptr<scene::Object> mesh, double offset, bool smooth) {
+    scene::Camera c;
+    c.type = scene::CameraType::MeshCamera;
+    c.mesh = scene::Camera::MeshRays{};
+    c.mesh->distribution = 3;
+    c.mesh->meshes = {std::move(mesh)};
+    c.mesh->offset = offset;
+    c.mesh->smooth = smooth;
+    return c;
+}
+
+// The lower-left half of the uv square on a 2 x 2 square in z = 0 (facing -z by POV's winding).
+const UvFace kLowerLeft{{glm::dvec3(0, 0, 0), glm::dvec3(2, 0, 0), glm::dvec3(0, 2, 0)},
+                        {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0, 1)}};
+
+TEST(Camera, MeshCameraUvRayStartsAtThePixelsPlaceOnTheFirstFaceThere) {
+    // A second face with the same uvs further on: the first in mesh order wins.
+    UvFace later = kLowerLeft;
+    for (glm::dvec3& p : later.p) p.z = 5;
+    const CameraModel cam(uv_camera(uv_mesh({kLowerLeft, later}), -0.5, false), 10, 10);
+    // Pixel (2, 7): u = 2 / 10, v = 1 - 7 / 10; weights 0.5, 0.2, 0.3.
+    const auto r = cam.ray(2, 7);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->origin.x, 0.4, 1e-12);
+    EXPECT_NEAR(r->origin.y, 0.6, 1e-12);
+    EXPECT_NEAR(r->origin.z, 0.5, 1e-12);  // location.z along the face normal -z
+    EXPECT_NEAR(r->dir.z, -1, 1e-12);
+    // POV's row -0.5 is clamped to 0 (v = 1 - 0.5 / 10), its last column 9.5 to 9 (u = 8.5 / 10).
+    EXPECT_NEAR(cam.ray(0, 0)->origin.y, 2 * 0.95, 1e-12);
+    EXPECT_NEAR(cam.ray(0, 1)->origin.y, 2 * 0.9, 1e-12);
+    EXPECT_NEAR(cam.ray(9, 9)->origin.x, 2 * 0.85, 1e-12);
+    EXPECT_FALSE(cam.ray(9, 5));  // u 0.85 + v 0.5 lies past the diagonal
+}
+
+TEST(Camera, MeshCameraUvSampleOutsideEveryFaceHasNoRay) {
+    const CameraModel half(uv_camera(uv_mesh({kLowerLeft}), 0, false), 10, 10);
+    EXPECT_FALSE(half.ray(8, 2));  // u 0.8, v 0.8
+    // The upper-right half covers it, on the other side of the square.
+    const UvFace upper{{glm::dvec3(2, 0, 1), glm::dvec3(2, 2, 1), glm::dvec3(0, 2, 1)},
+                       {glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1)}};
+    const CameraModel full(uv_camera(uv_mesh({kLowerLeft, upper}), 0, false), 10, 10);
+    const auto r = full.ray(8, 2);
+    ASSERT_TRUE(r);
+    EXPECT_NEAR(r->origin.x, 1.6, 1e-12);
+    EXPECT_NEAR(r->origin.y, 1.6, 1e-12);
+    EXPECT_NEAR(r->origin.z, 1, 1e-12);
+}
+
+TEST(Camera, MeshCameraUvSmoothBlendsTheVertexNormals) {
+    const std::vector<std::array<glm::dvec3, 3>> normals{
+        {glm::dvec3(0, 0, 2), glm::dvec3(1, 0, 0), glm::dvec3(0, 3, 0)}};  // unit once read
+    const CameraModel flat(uv_camera(uv_mesh({kLowerLeft}, normals), 0, false), 10, 10);
+    EXPECT_NEAR(flat.ray(2, 7)->dir.z, -1, 1e-12);  // no smooth: the face normal
+    const CameraModel smooth(uv_camera(uv_mesh({kLowerLeft}, normals), 1, true), 10, 10);
+    const auto r = smooth.ray(2, 7);
+    ASSERT_TRUE(r);
+    // Weights 0.5, 0.2, 0.3: the blend (0.2, 0.3, 0.5), which also scales the offset.
+    const glm::dvec3 blend(0.2, 0.3, 0.5), unit = glm::normalize(blend);
+    EXPECT_NEAR(r->dir.x, unit.x, 1e-12);
+    EXPECT_NEAR(r->dir.y, unit.y, 1e-12);
+    EXPECT_NEAR(r->dir.z, unit.z, 1e-12);
+    EXPECT_NEAR(r->origin.x, 0.4 + blend.x, 1e-12);
+    EXPECT_NEAR(r->origin.y, 0.6 + blend.y, 1e-12);
+    EXPECT_NEAR(r->origin.z, blend.z, 1e-12);
+    // Reversed and moved with the mesh.
+    scene::Camera c = uv_camera(uv_mesh({kLowerLeft}, normals), 0, true);
+    c.mesh->reverse = true;
+    auto moved = std::make_shared<scene::Object>(*c.mesh->meshes[0]);
+    moved->transform = {glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1),
+                        glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -5, 0, 0, 1)};
+    c.mesh->meshes = {moved};
+    const auto back = CameraModel(c, 10, 10).ray(2, 7);
+    EXPECT_NEAR(back->origin.x, 5.4, 1e-12);
+    EXPECT_NEAR(back->dir.z, -unit.z, 1e-12);
+}
+
+TEST(Camera, MeshCameraUvCellsFindTheSameFaceAsASearchInMeshOrder) {
+    // Many overlapping random uv triangles, some reaching past the unit square, some slivers:
+    // the cell lookup must return the first containing face, as a plain search does.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> at(-0.05, 1.05), size(0.001, 0.3);
+    std::vector<UvFace> faces;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::dvec2 a(at(rng), at(rng));
+        UvFace f;
+        f.uv = {a, a + glm::dvec2(size(rng), size(rng) * 0.2), a + glm::dvec2(size(rng) * 0.3, size(rng))};
+        f.p = {glm::dvec3(3 * i, 0, 0), glm::dvec3(3 * i, 1, 0), glm::dvec3(3 * i + 1, 0, 0)};
+        faces.push_back(f);
+    }
+    const CameraModel cam(uv_camera(uv_mesh(faces), 0, false), 97, 89);
+    int found = 0;
+    for (int j = 0; j < 89; ++j)
+        for (int i = 0; i < 97; ++i) {
+            const double u = std::clamp(i + 0.5, 0.0, 96.0) - 0.5, v = std::clamp(j - 0.5, 0.0, 88.0) + 0.5;
+            const double su = u / 97, sv = 1 - v / 89;
+            int first = -1;
+            for (size_t f = 0; f < faces.size() && first < 0; ++f) {
+                const auto& p = faces[f].uv;
+                const double s = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+                const double b0 = ((p[1].x - su) * (p[2].y - sv) - (p[2].x - su) * (p[1].y - sv)) / s;
+                const double b1 = ((p[2].x - su) * (p[0].y - sv) - (p[0].x - su) * (p[2].y - sv)) / s;
+                const double b2 = ((p[0].x - su) * (p[1].y - sv) - (p[1].x - su) * (p[0].y - sv)) / s;
+                if (b0 >= 0 && b1 >= 0 && b2 >= 0) first = int(f);
+            }
+            const auto r = cam.ray(i, j);
+            ASSERT_EQ(r.has_value(), first >= 0) << i << " " << j;
+            if (first < 0) continue;
+            ++found;
+            // Face f's corners have x in [3f, 3f + 1].
+            EXPECT_GE(r->origin.x, 3 * first - 1e-9) << i << " " << j;
+            EXPECT_LE(r->origin.x, 3 * first + 1 + 1e-9) << i << " " << j;
+        }
+    EXPECT_GT(found, 97 * 89 / 2);
 }
 
 }  // namespace

@@ -53,10 +53,13 @@ struct Camera {
     // along the face normal a ray starts and whether it runs backwards.
     struct MeshRays {
         int rays = 1;
-        int distribution = 0;  // 0: ray k on mesh k; 1: meshes joined; 2: meshes side by side
+        // 0: ray k on mesh k; 1: meshes joined; 2: meshes side by side; 3: the pixel's place
+        // in the first mesh's uv map (texture baking)
+        int distribution = 0;
         std::vector<std::shared_ptr<const Object>> meshes;
         double offset = 0;     // location.z
         bool reverse = false;  // direction.z < 0
+        bool smooth = false;   // distribution 3: rays along the interpolated vertex normals
     };
     std::optional<MeshRays> mesh;
     // Focal blur (`aperture` not 0 and `blur_samples` above 0): each sample averages rays from
