@@ -22,6 +22,7 @@ struct DisplaySettings {
     double brightness = 1, gray_threshold = 0;
     int gather_rays = 256;
     double cache_error = 0.3;            // Ward's a: reuse radius relative to the harmonic mean
+    double point_cache_error = 0.3;      // the same for the gathers of unmeshed surfaces
     double min_reuse = 0.015, max_reuse = 0.2;  // × distance to the camera (POV)
     glm::dvec3 camera{0};
 };
@@ -54,8 +55,10 @@ std::unique_ptr<IndirectLight> make_preview(const SceneMesh& mesh, const Receive
 std::unique_ptr<IndirectLight> make_gather(const PointGather& points,
                                            const DisplaySettings& settings);
 
-// The point gathers of the display: its rays and cache, `bounces` levels deep.
+// The point gathers of the display, `bounces` levels deep: the gather display's rays and
+// cache when they serve `everywhere`, more rays and a coarser cache when they only stand in
+// for the preview where a hit is on no element.
 PointGatherSettings point_gather_settings(const scene::Scene& scene, const DisplaySettings& s,
-                                          int bounces);
+                                          int bounces, bool everywhere);
 
 }  // namespace lumen::render::radiosity
