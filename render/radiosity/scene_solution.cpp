@@ -107,9 +107,8 @@ std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& 
             const MeshVertex& mv = mesh.vertices[v];
             if (!needs_light(mv)) continue;
             const glm::dvec3 p = gather_origin(mesh, mv);
-            for (size_t side = 0; side < 2; ++side)
-                H[2 * v + side] = direct_light_at(frame.lights(), frame.geometry(), p,
-                                                  side_normal(mv, side), mv.brilliance, counters);
+            H[2 * v] = direct_light_at(frame.lights(), frame.geometry(), p, mv.normal,
+                                       mv.brilliance, counters, &H[2 * v + 1]);
         }
     });
     return H;

@@ -44,17 +44,23 @@ bool never_diffuse(const scene::LayeredTexture* texture) {
 
 glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Intersector& geometry,
                            const glm::dvec3& p, const glm::dvec3& n, double brilliance,
-                           TraceCounters& counters) {
+                           TraceCounters& counters, glm::dvec3* back) {
     const InteriorList outside{};
     glm::dvec3 H(0);
     for (const LightSource& l : lights) {
         LightSample ls;
         if (!illuminate(l, p, ls)) continue;
-        const double c = glm::dot(n, ls.dir);
-        if (c <= 0) continue;
+        double c = glm::dot(n, ls.dir);
+        glm::dvec3* side = &H;
+        if (c <= 0) {
+            if (!back) continue;
+            c = -c;
+            side = back;
+            if (c <= 0) continue;
+        }
         glm::dvec3 lc = ls.colour * (brilliance == 1 ? c : std::pow(c, brilliance));
         if (!l.shadowless) lc *= shadow_filter(geometry, p, ls.dir, ls.distance, outside, counters);
-        H += lc;
+        *side += lc;
     }
     return H;
 }

@@ -34,9 +34,10 @@ bool never_diffuse(const scene::LayeredTexture* texture);
 
 // Direct light reaching point p (already lifted off the surface) on the side of unit normal n:
 // POV's radiosity rays see area lights as point lights at their centre, spotlight falloff and
-// fade apply, shadows are traced, the diffuse term goes with cos^brilliance.
+// fade apply, shadows are traced, the diffuse term goes with cos^brilliance. With `back`, the
+// light on the side of -n is added there, each light sampled once for both sides.
 glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Intersector& geometry,
                            const glm::dvec3& p, const glm::dvec3& n, double brilliance,
-                           TraceCounters& counters);
+                           TraceCounters& counters, glm::dvec3* back = nullptr);
 
 }  // namespace lumen::render::radiosity
