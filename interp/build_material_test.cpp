@@ -143,11 +143,11 @@ TEST_F(BuildMaterial, ObsoleteFinishIorIsKept) {
     EXPECT_DOUBLE_EQ(*f.ior, 1.5);
 }
 
-TEST_F(BuildMaterial, NormalPatternRecordedAsUnsupported) {
+TEST_F(BuildMaterial, PavementNormalIsDifferenced) {
     scene::Texture t = texture_of("sphere { 0, 1 normal { pavement bump_size 0.4 scale 0.2 } }");
     EXPECT_EQ(t.normal->pattern.type(), scene::PatternType::Pavement);
     EXPECT_EQ(t.normal->amount, double(0.4f));  // POV keeps it in single precision
-    EXPECT_EQ(t.normal->pattern.unsupported->feature, "normal 'pavement'");
+    EXPECT_FALSE(t.normal->pattern.unsupported.has_value());
 }
 
 TEST_F(BuildMaterial, TextureIdentCopiesAndAcceptsModifiers) {

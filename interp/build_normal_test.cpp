@@ -42,7 +42,8 @@ TEST_F(BuildNormal, EveryKindIsReportedUnlessItRendersAsANormal) {
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Gradient));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Facets));
     EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Dents));
-    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Pavement));
+    EXPECT_TRUE(scene::normal_rendered(scene::PatternType::Pavement));
+    EXPECT_FALSE(scene::normal_rendered(scene::PatternType::Function));
     EXPECT_GE(rendered, 30);
 }
 
@@ -89,9 +90,9 @@ TEST_F(BuildNormal, SlopeMapAndNormalMapReplaceEachOther) {
 // An unrendered pattern inside a normal_map entry is reported like one at the top.
 TEST_F(BuildNormal, UnrenderedEntriesAreReported) {
     const scene::Scene s = run(
-        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 pavement] } } }");
+        "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] [1 function { x }] } } }");
     ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "normal 'pavement'");
+    EXPECT_EQ(s.unsupported[0].feature, "pattern 'function'");
     EXPECT_TRUE(run("sphere { 0, 1 normal { checker normal { quilted } normal { onion } } }")
                     .unsupported.empty());
 }

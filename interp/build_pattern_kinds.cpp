@@ -100,12 +100,10 @@ int as_byte(double v) {
 }
 
 // `tiling N`: POV-Ray keeps N as a byte (truncated, then modulo 256: 258 is 2) and refuses
-// one outside 1..27; lumen models all but the Penrose tilings 25-27.
-void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern& pattern, pattern::Tiling& t) {
+// one outside 1..27.
+void read_tiling(ItemCursor& cur, const Item& kw, scene::Pattern&, pattern::Tiling& t) {
     t.type = as_byte(cur.expect_float(kw.keyword));
     if (t.type < 1 || t.type > 27) cur.fail(kw.loc, "tiling number must be between 1 and 27");
-    if (t.type >= 25)
-        mark_unsupported(pattern, "pattern 'tiling " + std::to_string(t.type) + "'", kw.loc);
 }
 
 // A kind-specific modifier's value, by the type of the parameter it sets.

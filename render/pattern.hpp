@@ -18,6 +18,9 @@ struct SurfacePoint {
     glm::dvec3 point, normal, direction;
     glm::dvec2 uv{0};
     bool oriented = true;
+    // Set by the patterns that read `normal`: the tracer re-evaluates a layer's pigment only
+    // when it did and a normal perturbed since then (POV perturbs before it colours a layer).
+    mutable bool normal_read = false;
 };
 
 // The point a pattern starts from: p, or (u, v, 0) of the surface under uv_mapping (POV-Ray

@@ -91,9 +91,17 @@ void resolve_layers(const scene::LayeredTexture* layers, const glm::dvec3& p,
         out.add(plain_layer(scene::Colour{}, p));
         return;
     }
-    for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it)
-        out.add(*it ? resolve_layer(**it, p, surface)
-                    : plain_layer(scene::Colour{}, p));
+    for (auto it = layers->rbegin(); it != layers->rend() && !out.full(); ++it) {
+        if (!*it) {
+            out.add(plain_layer(scene::Colour{}, p));
+            continue;
+        }
+        if (surface) surface->normal_read = false;
+        ResolvedLayer layer = resolve_layer(**it, p, surface);
+        layer.source = it->get();
+        layer.reads_normal = surface && surface->normal_read;
+        out.add(layer);
+    }
 }
 
 glm::dvec3 surface_filter(const scene::LayeredTexture* layers, const glm::dvec3& p,

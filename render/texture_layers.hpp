@@ -22,6 +22,10 @@ struct ResolvedLayer {
     // within a texture_map's entry the map's pattern point and its frame.
     glm::dvec3 point;
     NormalFrame frame;
+    // The texture this layer was resolved from, and whether its colour read the surface
+    // normal (slope, aoi): then a normal perturbed before the layer is coloured changes it.
+    const scene::Texture* source;
+    bool reads_normal;
 };
 
 const scene::Finish& default_finish();

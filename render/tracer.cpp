@@ -277,8 +277,6 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     bool have_indirect = false;
     for (int i = 0; i < layers.count(); ++i) {
         const ResolvedLayer& layer = layers[i];
-        const scene::Colour& c = layer.colour;
-        const glm::dvec3 rgb(c.r, c.g, c.b);
         SurfaceSample s;
         s.point = hit.point;
         s.view = d;
@@ -288,6 +286,15 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
                        : raw_n;
         if (i == 0) top_normal = s.normal;
         if (layer.normal && quality >= 8 && hit.pattern_normal) *hit.pattern_normal = s.normal;
+        // POV colours a layer after perturbing its normal: a slope or aoi pigment sees the
+        // normal this layer (or the last one that had a normal) left.
+        scene::Colour c = layer.colour;
+        if (layer.reads_normal && hit.pattern_normal && *hit.pattern_normal != surface.normal) {
+            SurfacePoint now = surface;
+            now.normal = *hit.pattern_normal;
+            c = resolve_layer(*layer.source, at.point, &now).colour;
+        }
+        const glm::dvec3 rgb(c.r, c.g, c.b);
         s.raw_normal = raw_n;
         s.object = hit.object;
         s.colour = rgb;

@@ -34,11 +34,6 @@ template <> struct NormalForm<pattern::Waves> : DedicatedForm<true> {};
 template <> struct NormalForm<pattern::Quilted> : DedicatedForm<true> {};
 template <> struct NormalForm<pattern::Average> : DedicatedForm<true> {};  // its map, weighted
 template <> struct NormalForm<pattern::Facets> : DedicatedForm<true> {};
-// pavement's differenced normal is not yet checked against POV-Ray's: reported unsupported.
-template <> struct NormalForm<pattern::Pavement> {
-    static constexpr bool dedicated = false;
-    static constexpr bool rendered = false;
-};
 
 namespace normal_form_detail {
 template <std::size_t... I>

@@ -1,4 +1,4 @@
-// pavement's layouts as data: each one a periodic table of tile letters over unit cells, the
+// pavement's layouts as data: each one a periodic table of tile letters over its cells, the
 // one list both the interp (what is modelled; the rest is reported unsupported) and the
 // renderer (render/patterns/pavement.cpp) read. A cell's walls and corners are derived from its
 // neighbours: cells of different letters lie in different tiles, so two tiles of one letter
@@ -12,6 +12,12 @@ struct PavementLayout {
     int sides, tiles, number;  // number_of_sides, number_of_tiles, pattern
     int width, height;         // the period, in cells along x and z
     std::string_view cells;    // height rows of width letters, the row at z = 0 first
+
+    // The letter of cell (column, row), the table repeating in both directions.
+    constexpr char at(long column, long row) const {
+        const long c = ((column % width) + width) % width, r = ((row % height) + height) % height;
+        return cells[std::size_t(r * width + c)];
+    }
 };
 
 // Square cells (number_of_sides 4), every layout of 1-6 tiles: 1 the single squares, 2 POV's
@@ -86,6 +92,9 @@ inline constexpr PavementLayout kPavementLayouts[] = {
       "NMMMMPLOKNNN" "RMPPPPOOOOQN" "RRRTPSOQQQQR" "TTTTSSSSVQUR" "UXTWSVVVVUUU" "XXWWWWDVBUXX"
       "XFWDDDDBBBBA"},
     {4, 6, 35, 4, 6, "BAAA" "BBBA" "BDCA" "DDCD" "CDCC" "BDCA"},
+// Triangular and hexagonal cells: each file says how its tables cover the cells.
+#include "scene/pavement_layouts_triangles.inc"
+#include "scene/pavement_layouts_hexagons.inc"
 };
 // clang-format on
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/patterns/pavement_cells.hpp"
 #include "scene/pavement_layouts.hpp"
 
 namespace lumen::render {
@@ -14,13 +15,6 @@ constexpr bool tables_fill_their_periods() {
     return true;
 }
 static_assert(tables_fill_their_periods(), "a pavement table's rows do not match its period");
-
-// A cell's letter, the table repeating in both directions.
-char letter(const scene::PavementLayout& l, long x, long z) {
-    const long cx = ((x % l.width) + l.width) % l.width;
-    const long cz = ((z % l.height) + l.height) % l.height;
-    return l.cells[std::size_t(cz * l.width + cx)];
-}
 
 // One corner of a square cell, (cx, cz) in {0, 1}²: du and dv are twice the distances from it
 // along x and z (0 at the corner, 2 at the far side).
@@ -39,8 +33,8 @@ double square_cells(const scene::PavementLayout& l, const scene::pattern::Paveme
                     double z) {
     const long xv = long(std::floor(x)), zv = long(std::floor(z));
     const double u = x - double(xv), v = z - double(zv);
-    const char self = letter(l, xv, zv);
-    const auto other = [&](int dx, int dz) { return letter(l, xv + dx, zv + dz) != self; };
+    const char self = l.at(xv, zv);
+    const auto other = [&](int dx, int dz) { return l.at(xv + dx, zv + dz) != self; };
     const bool wall[2][2] = {{other(-1, 0), other(1, 0)}, {other(0, -1), other(0, 1)}};
     Corner corners[4];
     for (int i = 0; i < 4; ++i) {
@@ -89,6 +83,8 @@ double evaluate(const scene::pattern::Pavement& k, const glm::dvec3& p) {
     const scene::PavementLayout* l =
         scene::pavement_layout(int(k.sides), int(k.tiles), int(k.number));
     if (!l) return 0;  // the interp reports an unmodelled layout unsupported
+    if (l->sides == 3) return triangle_cells(*l, k, p.x, p.z);
+    if (l->sides == 6) return hexagon_cells(*l, k, p.x, p.z);
     return square_cells(*l, k, p.x, p.z);
 }
 

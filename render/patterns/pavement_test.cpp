@@ -8,15 +8,13 @@
 #include <vector>
 
 #include "render/patterns/pavement.hpp"
+#include "render/patterns/pavement_test_support.hpp"
 #include "scene/pavement_layouts.hpp"
 
 namespace lumen::render {
 namespace {
 
-struct Read {
-    int tiles, number, exterior, interior, form;
-    double x, z, value;  // POV's output at (x, 0, z)
-};
+using Read = PavementRead;
 const Read kReads[] = {
     {1, 1, 0, 0, 0, 1.40625, 2.78125, 0.56249},
     {1, 1, 0, 0, 0, 0.84375, 3.59375, 0.68750},
@@ -141,18 +139,9 @@ const Read kReads[] = {
 };
 
 TEST(Pavement, SquareCellsMatchPovray) {
-    for (const Read& r : kReads) {
-        scene::pattern::Pavement k;
-        k.sides = 4;
-        k.tiles = r.tiles;
-        k.number = r.number;
-        k.exterior = r.exterior;
-        k.interior = r.interior;
-        k.form = r.form;
-        EXPECT_NEAR(evaluate(k, {r.x, 0, r.z}), r.value, 1e-4)
-            << "tiles " << r.tiles << " pattern " << r.number << " exterior " << r.exterior
-            << " interior " << r.interior << " form " << r.form << " at " << r.x << ", " << r.z;
-    }
+    expect_pavement_reads(4, kReads,
+                          [](const scene::PavementLayout&, const scene::pattern::Pavement& k,
+                             double x, double z) { return evaluate(k, {x, 0, z}); });
 }
 
 // Every layout POV accepts for square cells is tabled, and each of its tiles, found by joining
@@ -163,38 +152,10 @@ TEST(Pavement, EverySquareLayoutIsTabledWithTilesOfItsSize) {
         for (int n = 1; n <= layouts[tiles - 1]; ++n) {
             const scene::PavementLayout* l = scene::pavement_layout(4, tiles, n);
             ASSERT_NE(l, nullptr) << tiles << " " << n;
-            const int w = 3 * l->width + 12, h = 3 * l->height + 12;
-            const auto at = [&](int x, int z) {
-                return l->cells[std::size_t((z % l->height) * l->width + x % l->width)];
+            const auto edges = [](int a, int b) {
+                return std::vector<std::pair<int, int>>{{a + 1, b}, {a - 1, b}, {a, b + 1}, {a, b - 1}};
             };
-            std::map<std::pair<int, int>, int> tile;
-            std::vector<int> size;
-            for (int x = 0; x < w; ++x)
-                for (int z = 0; z < h; ++z) {
-                    if (tile.count({x, z})) continue;
-                    std::vector<std::pair<int, int>> todo{{x, z}};
-                    tile[{x, z}] = int(size.size());
-                    int cells = 0;
-                    bool cut = false;  // reaches the stretch's edge: not counted
-                    while (!todo.empty()) {
-                        const auto [a, b] = todo.back();
-                        todo.pop_back();
-                        ++cells;
-                        const std::pair<int, int> next[] = {
-                            {a + 1, b}, {a - 1, b}, {a, b + 1}, {a, b - 1}};
-                        for (const auto& [c, d] : next) {
-                            if (c < 0 || d < 0 || c >= w || d >= h) {
-                                cut = true;
-                                continue;
-                            }
-                            if (at(c, d) != at(a, b) || tile.count({c, d})) continue;
-                            tile[{c, d}] = int(size.size());
-                            todo.push_back({c, d});
-                        }
-                    }
-                    size.push_back(cut ? tiles : cells);
-                }
-            for (int s : size) EXPECT_EQ(s, tiles) << "tiles " << tiles << " pattern " << n;
+            expect_tiles_of_size(pavement_tiles(*l, edges), tiles, n);
         }
 }
 

@@ -29,6 +29,7 @@ double wrap_unit(double v) {
 
 double evaluate(const scene::pattern::Slope& k, const glm::dvec3& p, const SurfacePoint* s) {
     if (!s || !s->oriented) return 0;
+    s->normal_read = true;
     glm::dvec3 towards = k.direction;
     if (k.point_at) {
         const glm::dvec3 d = k.direction - s->point;
@@ -46,6 +47,7 @@ double evaluate(const scene::pattern::Slope& k, const glm::dvec3& p, const Surfa
 // 0.5 where the ray meets the surface edge-on, 1 head-on (the normal faces the ray).
 double evaluate(const scene::pattern::Aoi&, const glm::dvec3&, const SurfacePoint* s) {
     if (!s || !s->oriented) return 0;
+    s->normal_read = true;
     const double cosine = std::clamp(glm::dot(s->normal, s->direction), -1.0, 1.0);
     return std::acos(cosine) / std::numbers::pi;
 }

@@ -5,7 +5,7 @@
 namespace lumen::render {
 
 // Tiling n's layout, or null where lumen has none (tilings 1, 2, 3, 5 and 10 are computed in
-// render/patterns/tilings.cpp; 25-27, Penrose's, are not modelled).
+// render/patterns/tilings.cpp, 25-27, Penrose's, in render/patterns/penrose.cpp).
 const TilingLayout* tiling_layout(int n);
 
 }  // namespace lumen::render

@@ -44,7 +44,7 @@ TEST(TilingLayouts, ValuesReadFromPovray) {
 }
 
 // Every kind shows somewhere in a few cells, values stay in [0, 1] and finite far out, and
-// the Penrose tilings have no layout.
+// the Penrose tilings (render/patterns/penrose.cpp) have no layout.
 TEST(TilingLayouts, KindsRangeAndFarPoints) {
     for (int n = 1; n <= 27; ++n) {
         const TilingLayout* layout = tiling_layout(n);

@@ -2,6 +2,7 @@
 // against povray renders (tests/patterns/cubic.pov, tiling.pov).
 #include "render/patterns/tilings.hpp"
 
+#include "render/patterns/penrose.hpp"
 #include "render/patterns/tiling_layouts.hpp"
 
 #include <algorithm>
@@ -136,11 +137,14 @@ double evaluate(const scene::pattern::Tiling& k, const glm::dvec3& p) {
     }();
     if (k.type >= 0 && k.type < 28 && evaluators[k.type]) return (*evaluators[k.type])(p.x, p.z);
     switch (k.type) {
+        case 25:
+        case 26:
+        case 27: return penrose_tiles(k.type, p.x, p.z);
         case 2: return hexagon_tiles(p.x, p.z);
         case 3: return triangle_tiles(p.x, p.z);
         case 5: return rhombus_tiles(p.x, p.z);
         case 10: return offset_square_tiles(p.x, p.z);
-        default: return square_tiles(p.x, p.z);  // 1; the interp refuses the unmodelled ones
+        default: return square_tiles(p.x, p.z);  // 1
     }
 }
 
