@@ -109,6 +109,9 @@ void walk_contour(const std::vector<scene::Text::Point>& pts, size_t begin, size
         }
         p0 = e.b;
         const bool degenerate = e.curve ? (e.a == e.b && e.a == e.c) : e.a == e.b;
+        e.lo = glm::min(e.a, e.b);
+        e.hi = glm::max(e.a, e.b);
+        if (e.curve) e.lo = glm::min(e.lo, e.c), e.hi = glm::max(e.hi, e.c);
         if (!degenerate) out.push_back(e);
     }
 }
@@ -178,7 +181,16 @@ void hit_glyph(const PreparedGlyph& g, double thickness, const glm::dvec3& P,
         best = t;
         normal = outward * glm::dvec3(dir.y, -dir.x, 0);
     };
+    // Where the ray's (x, y) path runs while it is inside the glyph's box, a little enlarged:
+    // an edge whose box it misses has no wall hit (most rays cross a glyph steeply, over
+    // few of its edges).
+    const glm::dvec2 from(P.x + enter * D.x, P.y + enter * D.y), to(P.x + exit * D.x, P.y + exit * D.y);
+    const glm::dvec2 pad(1e-9 * (1 + std::abs(g.lo.x) + std::abs(g.hi.x)),
+                         1e-9 * (1 + std::abs(g.lo.y) + std::abs(g.hi.y)));
+    const glm::dvec2 path_lo = glm::min(from, to) - pad, path_hi = glm::max(from, to) + pad;
     for (const GlyphEdge& e : g.edges) {
+        if (e.hi.x < path_lo.x || e.lo.x > path_hi.x || e.hi.y < path_lo.y || e.lo.y > path_hi.y)
+            continue;
         if (!e.curve) {
             const glm::dvec2 d = e.b - e.a;
             const double den = d.y * D.x - d.x * D.y;
@@ -206,8 +218,11 @@ void hit_glyph(const PreparedGlyph& g, double thickness, const glm::dvec3& P,
 bool inside_glyph(const PreparedGlyph& g, const glm::dvec2& q) {
     if (q.y < g.lo.y || q.y > g.hi.y || q.x > g.hi.x) return false;
     int crossings = 0;
-    for (const GlyphEdge& e : g.edges)
+    const double left = q.x - 1e-6 * (1 + std::abs(q.x));  // crossings just left of q count
+    for (const GlyphEdge& e : g.edges) {
+        if (e.lo.y > q.y || e.hi.y < q.y || e.hi.x < left) continue;  // cannot cross
         crossings += e.curve ? crossings_curve(e, q) : int(crosses_line(e, q));
+    }
     return crossings % 2 == 1;
 }
 
@@ -244,14 +259,29 @@ TextShape make_text(const scene::Text& t) {
         out.box.expand(g.position + glm::dvec3(g.hi, std::max(0.0, t.thickness)));
         out.glyphs.push_back(std::move(g));
     }
+    std::vector<Aabb> boxes;
+    for (const PreparedGlyph& g : out.glyphs) {
+        // hit_glyph's own box test pads the glyph's box; this one may be looser.
+        Aabb b;
+        b.expand(g.position + glm::dvec3(g.lo, std::min(0.0, t.thickness)));
+        b.expand(g.position + glm::dvec3(g.hi, std::max(0.0, t.thickness)));
+        const glm::dvec3 pad = 1e-6 * (glm::dvec3(1) + glm::abs(b.lo) + glm::abs(b.hi));
+        boxes.push_back({b.lo - pad, b.hi + pad});
+    }
+    out.tree.build(boxes, 2);
+    std::vector<PreparedGlyph> ordered;
+    for (uint32_t i : out.tree.order()) ordered.push_back(std::move(out.glyphs[i]));
+    out.glyphs = std::move(ordered);
     return out;
 }
 
 bool intersect(const TextShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     double best = tmax;
     glm::dvec3 normal{0};
-    for (const PreparedGlyph& g : s.glyphs)
+    s.tree.traverse(SlabRay(r.o, r.d), tmin, best, [&](uint32_t i) {
+        const PreparedGlyph& g = s.glyphs[i];
         hit_glyph(g, s.thickness, r.o - g.position, r.d, tmin, best, normal);
+    });
     if (!(best < tmax)) return false;
     h.t = best;
     h.normal = normal;

@@ -3,6 +3,7 @@
 #pragma once
 #include <vector>
 
+#include "render/bvh.hpp"
 #include "render/shapes/shape.hpp"
 
 namespace lumen::render {
@@ -12,6 +13,7 @@ struct GlyphEdge {
     glm::dvec2 a{0}, c{0}, b{0};
     bool curve = false;
     double outward = 1;  // +1: (dy, -dx) points out of the glyph, -1: it points in
+    glm::dvec2 lo{0}, hi{0};  // box of a, c and b, which holds the edge: rays passing it skip it
 };
 
 struct PreparedGlyph {
@@ -21,9 +23,10 @@ struct PreparedGlyph {
 };
 
 struct TextShape {
-    std::vector<PreparedGlyph> glyphs;  // only glyphs with an outline
+    std::vector<PreparedGlyph> glyphs;  // only glyphs with an outline, in the tree's order
     double thickness = 1;
     Aabb box;
+    Bvh tree;  // over the glyphs' boxes: a ray tests the few glyphs it passes
 };
 
 TextShape make_text(const scene::Text& t);
