@@ -184,30 +184,62 @@ struct Sweep {
 // The gradient of the density at p from the elements of the active intervals.
 glm::dvec3 active_gradient(const BlobShape& s, const Sweep& sw, const glm::dvec3& p);
 
-// The elements whose boxes the ray o + t d crosses for t in [tmin, tmax] (d = 0 with
-// tmin = -inf and tmax = 0: the boxes holding the point o).
+// The elements whose boxes the ray o + t d crosses for t in [tmin, tmax], an element once
+// per box of it (the caller skips repeats along a ray).
 template <class F>
 void for_each_candidate(const BlobShape& s, const glm::dvec3& o, const glm::dvec3& d,
                         double tmin, double tmax, const F& f) {
-    s.tree.traverse(SlabRay(o, d), tmin, tmax, [&](uint32_t i) { f(int(s.tree.order()[i])); });
+    s.tree.traverse(SlabRay(o, d), tmin, tmax,
+                    [&](uint32_t i) { f(int(s.box_element[s.tree.order()[i]])); });
 }
 
-Aabb element_box(const BlobShape& s, const BlobElement& e) {
+// The elements whose boxes hold the point p, each once.
+template <class F> void for_each_element_at(const BlobShape& s, const glm::dvec3& p, const F& f) {
+    if (!s.pieces) {
+        for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0, f);
+        return;
+    }
+    thread_local std::vector<int> found;
+    found.clear();
+    for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0, [&](int i) { found.push_back(i); });
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    for (int i : found) f(i);
+}
+
+// A cylinder longer than this many diameters is boxed piece by piece.
+constexpr double kPieceDiameters = 1;
+constexpr int kMostPieces = 64;
+
+// The boxes of element e: one, or for a long cylinder one per piece of its axis.
+void element_boxes(const BlobShape& s, const BlobElement& e, std::vector<Aabb>& out) {
     const double r = std::sqrt(e.rad2);
-    Aabb box;
-    const glm::dvec3 ends[2] = {e.centre, e.centre + e.length * e.axis};
     const int first = e.kind == Kind::ApexCap ? 1 : 0;
     const int last = e.kind == Kind::Cylinder ? 1 : first;
-    for (int i = first; i <= last; ++i) {
-        box.expand(ends[i] - glm::dvec3(r));
-        box.expand(ends[i] + glm::dvec3(r));
+    const int pieces =
+        e.kind == Kind::Cylinder
+            ? int(std::clamp(std::ceil(e.length / (2 * r * kPieceDiameters)), 1.0, double(kMostPieces)))
+            : 1;
+    for (int k = 0; k < pieces; ++k) {
+        // Piece k spans [k, k + 1] / pieces of the axis (a sphere or cap: its one end).
+        const double from = first * e.length + (last - first) * e.length * k / pieces;
+        const double to = first * e.length + (last - first) * e.length * (k + 1) / pieces;
+        Aabb box;
+        for (const double at : {from, to}) {
+            box.expand(e.centre + at * e.axis - glm::dvec3(r));
+            box.expand(e.centre + at * e.axis + glm::dvec3(r));
+        }
+        out.push_back(e.transform < 0 ? box : transformed(box, s.to_component[e.transform]));
     }
-    return e.transform < 0 ? box : transformed(box, s.to_component[e.transform]);
 }
 
 void build_tree(BlobShape& s) {
     std::vector<Aabb> boxes;
-    for (const BlobElement& e : s.elements) boxes.push_back(element_box(s, e));
+    for (size_t i = 0; i < s.elements.size(); ++i) {
+        element_boxes(s, s.elements[i], boxes);
+        s.box_element.resize(boxes.size(), uint32_t(i));
+    }
+    s.pieces = boxes.size() > s.elements.size();
     s.tree.build(boxes, kLeafSize);
     s.box = s.tree.bounds();
 }
@@ -269,9 +301,7 @@ double blob_element_density(const BlobShape& s, const BlobElement& e, const glm:
 
 double blob_density(const BlobShape& s, const glm::dvec3& p) {
     double sum = 0;
-    for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0, [&](int i) {
-        sum += blob_element_density(s, s.elements[i], p);
-    });
+    for_each_element_at(s, p, [&](int i) { sum += blob_element_density(s, s.elements[i], p); });
     return sum;
 }
 
@@ -296,8 +326,7 @@ glm::dvec3 active_gradient(const BlobShape& s, const Sweep& sw, const glm::dvec3
 
 glm::dvec3 blob_gradient(const BlobShape& s, const glm::dvec3& p) {
     glm::dvec3 g(0);
-    for_each_candidate(s, p, glm::dvec3(0), -kHuge, 0,
-                       [&](int i) { g += element_gradient(s, s.elements[i], p); });
+    for_each_element_at(s, p, [&](int i) { g += element_gradient(s, s.elements[i], p); });
     return g;
 }
 

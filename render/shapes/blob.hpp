@@ -31,7 +31,12 @@ struct BlobShape {
     bool valid = false;
     std::vector<BlobElement> elements;
     std::vector<scene::Transform> to_component;  // the components' transforms (m: to blob space)
-    Bvh tree;  // over the elements' boxes (the hierarchy POV-Ray builds for its own speed)
+    // Over the elements' boxes (the hierarchy POV-Ray builds for its own speed), a long
+    // cylinder's split into pieces along its axis so that its box does not cover the blob:
+    // box_element maps the tree's boxes to elements, and `pieces` says whether any is split.
+    Bvh tree;
+    std::vector<uint32_t> box_element;
+    bool pieces = false;
     Aabb box;
     // The components' own textures (null: the blob's), when any component has one.
     std::vector<const scene::LayeredTexture*> textures;
