@@ -145,3 +145,34 @@ TEST(Blob, TextureWeightsAreTheComponentsDensities) {
 
 }  // namespace
 }  // namespace lumen::render
+
+namespace lumen::render {
+namespace {
+
+// A long cylinder is boxed piece by piece for the tree: its density at a point still counts
+// once (against the sum over every element), and rays along and across it find the surface
+// a blob with the cylinder boxed whole would.
+TEST(Blob, LongCylindersBoxedInPiecesCountOnce) {
+    const scene::Blob b = blob(0.5, {cylinder({-6, 0.1, 0}, {6, -0.2, 0.3}, 0.5, 1),
+                                     sphere({0, 0.8, 0}, 1, 1), sphere({3, 0, 0.2}, 0.7, -0.5)});
+    const BlobShape s = make_blob(b);
+    ASSERT_GT(s.box_element.size(), s.elements.size());  // the cylinder is in pieces
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 2000; ++i) {
+        const glm::dvec3 p{u(rng) * 7, u(rng), u(rng)};
+        double sum = 0;
+        for (const BlobElement& e : s.elements) sum += blob_element_density(s, e, p);
+        ASSERT_NEAR(blob_density(s, p), sum, 1e-12) << i;
+    }
+    // The capsule's surface radius where the sphere and the negative one are far away.
+    const double r = surface_radius(0.5, 1, 0.5);
+    const auto hit = trace(Geometry(scene_of({make(b)})), ray({-4.5, 5, 0}, {0, -1, 0}));
+    ASSERT_TRUE(hit);
+    const double axis_y = 0.1 - 0.3 / 12 * 1.5;  // the axis's height at x = -4.5
+    const double along_z = 0.3 / 12 * 1.5;
+    EXPECT_NEAR(hit->t, 5 - axis_y - std::sqrt(r * r - along_z * along_z), 1e-3);
+}
+
+}  // namespace
+}  // namespace lumen::render
