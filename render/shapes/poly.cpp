@@ -83,16 +83,16 @@ int general_roots(const PolyShape& s, const glm::dvec3& o, const glm::dvec3& d, 
         if (t.i != last_i) { expand(0, t.i, ex); last_i = t.i; last_j = -1; }
         if (t.j != last_j) { expand(1, t.j, ey); last_j = t.j; }
         expand(2, t.k, ez);
-        const int offset = n - (t.i + t.j + t.k);  // eqn[h]: the coefficient of k^(n - h)
-        for (int a = 0; a <= t.i; ++a)
-            for (int b = 0; b <= t.j; ++b)
-                for (int e = 0; e <= t.k; ++e) {
-                    double v = t.c;
-                    v *= ex[a];
-                    v *= ey[b];
-                    v *= ez[e];
-                    eqn[offset + a + b + e] += v;
-                }
+        // Each product is ((c ex) ey) ez, summed into eqn in this order (as POV-Ray does).
+        double* out = eqn + (n - (t.i + t.j + t.k));  // eqn[h]: the coefficient of k^(n - h)
+        for (int a = 0; a <= t.i; ++a) {
+            const double va = t.c * ex[a];
+            for (int b = 0; b <= t.j; ++b) {
+                const double vab = va * ey[b];
+                double* slot = out + a + b;
+                for (int e = 0; e <= t.k; ++e) slot[e] += vab * ez[e];
+            }
+        }
     }
     int lead = 0;
     while (lead <= n && eqn[lead] == 0) ++lead;
