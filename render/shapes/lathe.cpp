@@ -75,7 +75,17 @@ bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax,
     for (const CurveSegment& seg : s.curve.segments) {
         index = double(&seg - s.curve.segments.data());
         const double ro = std::max(std::abs(seg.lo.x), std::abs(seg.hi.x));
-        if (!slab.hits(padded_box({{-ro, seg.lo.y, -ro}, {ro, seg.hi.y, ro}}), k_min, best)) continue;
+        double k0, k1;
+        if (!slab.hits(padded_box({{-ro, seg.lo.y, -ro}, {ro, seg.hi.y, ro}}), k_min, best, k0, k1))
+            continue;
+        // Where the ray is in the segment's box, its squared distance from the axis (convex
+        // in k) must reach the band between the segment's least and greatest radius.
+        const double ri = seg.lo.x > 0 ? seg.lo.x : seg.hi.x < 0 ? -seg.hi.x : 0;
+        const auto radial2 = [&](double k) { return (rr * k + 2 * m) * k + rho2; };
+        const double vertex = rr > 0 ? std::clamp(-m / rr, k0, k1) : k0;
+        const double slack = 1e-9 * (1 + ro * ro + rho2 + rr * (k0 * k0 + k1 * k1));
+        if (radial2(vertex) > ro * ro + slack) continue;
+        if (std::max(radial2(k0), radial2(k1)) < ri * ri - slack) continue;
         double x[4], y[4];
         seg.coefficients(0, x);
         seg.coefficients(1, y);
