@@ -17,7 +17,7 @@ const scene::Texture* top_layer(const scene::LayeredTexture& layers) {
 }
 
 ResolvedLayer plain_layer(const scene::Colour& c, const glm::dvec3& p) {
-    return {c, &default_finish(), nullptr, p, NormalFrame::none()};
+    return {c, &default_finish(), nullptr, p, NormalFrame::none(), nullptr, false};
 }
 
 ResolvedLayer resolve_entry(const scene::LayeredTexture& layers, const glm::dvec3& p,
@@ -73,7 +73,8 @@ ResolvedLayer resolve_layer(const scene::Texture& texture, const glm::dvec3& wor
         const scene::Normal* normal = texture.normal.get();
         return {evaluate_pigment(texture.pigment.get(), p, surface),
                 texture.finish ? texture.finish.get() : &default_finish(), normal,
-                normal ? source_point(normal->pattern, p, surface) : p, NormalFrame::none()};
+                normal ? source_point(normal->pattern, p, surface) : p, NormalFrame::none(),
+                nullptr, false};
     }
     // The entries are evaluated at this pattern's point, their normals in its frame.
     const glm::dvec3 tp = pattern_point(texture.pattern, p);
