@@ -14,10 +14,6 @@
 namespace lumen::render {
 namespace {
 
-const scene::PavementLayout* hexagons(int tiles, int number) {
-    return scene::pavement_layout(6, tiles, number);
-}
-
 using Read = PavementRead;
 const Read kReads[] = {
     {1, 1, 0, 0, 0, -1.328125, -0.359375, 0.63809},
@@ -182,7 +178,7 @@ TEST(PavementHexagons, MatchPovray) { expect_pavement_reads(6, kReads, hexagon_c
 // Measured on povray: exterior leaves hexagons alone, and form 3 draws as form 0 (POV takes a
 // hexagonal pavement's form modulo 3).
 TEST(PavementHexagons, ExteriorChangesNothingAndForm3IsForm0) {
-    const scene::PavementLayout* l = hexagons(4, 4);
+    const scene::PavementLayout* l = scene::pavement_layout(6, 4, 4);
     ASSERT_NE(l, nullptr);
     for (double x = -3; x < 3; x += 0.0731)
         for (double z = -3; z < 3; z += 0.0677) {
@@ -199,7 +195,7 @@ TEST(PavementHexagons, EveryLayoutIsTabledWithTilesOfItsSize) {
     const int layouts[] = {1, 1, 3, 7, 22};
     for (int tiles = 1; tiles <= 5; ++tiles)
         for (int n = 1; n <= layouts[tiles - 1]; ++n) {
-            const scene::PavementLayout* l = hexagons(tiles, n);
+            const scene::PavementLayout* l = scene::pavement_layout(6, tiles, n);
             ASSERT_NE(l, nullptr) << tiles << " " << n;
             ASSERT_EQ(l->cells.size(), std::size_t(l->width * l->height)) << tiles << " " << n;
             ASSERT_EQ(l->width % 2, 0) << tiles << " " << n;
