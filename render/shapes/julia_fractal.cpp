@@ -229,8 +229,9 @@ private:
 
 // POV-Ray's search along o + k u (u unit) from k = `start` up to `depth_max`: the depth k of
 // the first change of state, the normal there.
+// A crossing found to lie below `unwanted` is dropped early (false).
 bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::dvec3& u,
-                    double start, double depth_max, double& depth,
+                    double start, double depth_max, double unwanted, double& depth,
                     glm::dvec3& normal) {
     // The step is 1/precision in object space whatever the transform (measured: scaling
     // the object changes nothing in POV-Ray's march).
@@ -264,6 +265,8 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
     // Bisect the step that crossed: `at` stays on the starting side.
     bool last = !current_in;
     while (dist > kJuliaTolerance) {
+        // The depth reported lies in [depth, depth + dist] (the step before this halving).
+        if (depth + dist < unwanted) return false;
         dist *= 0.5;
         const glm::dvec3 mid = at + dist * u;
         last = iterate(s, mid, orbit.data());
@@ -304,6 +307,7 @@ JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j) {
     const double r = j.bound_radius();
     s.radius2 = r * r;
     s.exit_value = j.exit_value();
+    s.grid = JuliaGrid::build(s);
     return s;
 }
 
@@ -324,12 +328,16 @@ bool intersect(const JuliaFractalShape& s, const LocalRay& r, double tmin, doubl
     // lumen marches on from tmin for them (POV-Ray's list repeats the first depth at points
     // further in before it reaches them; that is not reproduced).
     const double start = std::max(kmin, kJuliaTolerance);
+    // A first crossing this near is not a hit (below), so its search can stop once it is
+    // known to lie there: most shadow rays leaving the surface end so.
+    const double unwanted = s.csg_child ? 0 : std::min(tmin, kMinIntersectionDepth) * len;
+    if (s.grid && !s.grid->segment_may_hit(r.o + start * u, r.o + kmax * u)) return false;
     double depth = 0;
     glm::dvec3 normal;
-    if (!first_crossing(s, r.o, u, start, kmax, depth, normal)) return false;
+    if (!first_crossing(s, r.o, u, start, kmax, unwanted, depth, normal)) return false;
     if (!(depth / len > tmin) &&
         ((!s.csg_child && depth / len < kMinIntersectionDepth) ||
-         !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, depth, normal)))
+         !first_crossing(s, r.o, u, std::max(start, tmin * len), kmax, 0, depth, normal)))
         return false;
     const double t = depth / len;
     if (!(t > tmin) || !(t < tmax)) return false;
@@ -343,6 +351,7 @@ bool intersect(const JuliaFractalShape& s, const LocalRay& r, double tmin, doubl
 bool inside(const JuliaFractalShape& s, const glm::dvec3& p) {
     if (s.iterations < 0) return false;
     if (glm::dot(p, p) > s.radius2) return false;  // outside the bounding sphere
+    if (s.grid && !s.grid->may_contain(p)) return false;
     return iterate(s, p, nullptr);
 }
 

@@ -3,7 +3,11 @@
 // until the inside/outside state changes, the last step bisected down to 1e-7, and the normal
 // taken from the derivative of the iteration chain.
 #pragma once
+#include <memory>
+
 #include <glm/vec4.hpp>
+
+#include "render/shapes/julia_grid.hpp"
 
 #include "render/shapes/shape.hpp"
 
@@ -20,6 +24,7 @@ struct JuliaFractalShape {
     double slice_distance = 0;
     double radius2 = 4, exit_value = 4;
     bool csg_child = false;  // lists every crossing, not only the first
+    std::shared_ptr<const JuliaGrid> grid;  // where it can be inside; null: anywhere
 };
 
 JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j);

@@ -112,6 +112,7 @@ PolyShape make_poly(const scene::Poly& p) {
         for_each_term(p.order, [&](int term, int i, int j, int k) {
             if (p.coeffs[term] != 0) out.terms.push_back({p.coeffs[term], i, j, k});
         });
+    if (out.valid) out.box = poly_bound_box(out.terms, kPolyInside);
     return out;
 }
 
@@ -189,6 +190,6 @@ bool inside(const PolyShape& s, const glm::dvec3& p) {
     return s.valid && poly_value(s, p) < kPolyInside;
 }
 
-Aabb bounds(const PolyShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
+Aabb bounds(const PolyShape& s) { return s.valid ? s.box : Aabb{}; }
 
 }  // namespace lumen::render

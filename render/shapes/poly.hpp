@@ -1,9 +1,10 @@
 // poly, cubic and quartic: the surface F(x, y, z) = 0 of a polynomial of order 2..35, solved
-// along the ray with POV-Ray's solver rules (render/pov_polynomial.hpp). Unbounded, as in
-// POV-Ray: only clipped_by or bounded_by limit it.
+// along the ray with POV-Ray's solver rules (render/pov_polynomial.hpp). POV-Ray never bounds
+// it; lumen bounds the surfaces it can prove bounded (render/shapes/poly_bounds.hpp).
 #pragma once
 #include <vector>
 
+#include "render/shapes/poly_bounds.hpp"
 #include "render/shapes/shape.hpp"
 
 namespace lumen::render {
@@ -15,11 +16,9 @@ struct PolyShape {
     bool valid = false;
     // The non-zero terms c x^i y^j z^k, in that order: the per-ray expansion visits only these
     // (a sextic has 84 terms, x^6 + y^6 + z^6 - c has 4).
-    struct Term {
-        double c;
-        int i, j, k;
-    };
+    using Term = PolyTerm;
     std::vector<Term> terms;
+    Aabb box = Aabb::everything();  // render/shapes/poly_bounds.hpp
 };
 
 PolyShape make_poly(const scene::Poly& p);
