@@ -139,18 +139,14 @@ glm::dvec4 duplex_apply(JuliaFunction fn, const glm::dvec4& h, const Complex& ex
 }  // namespace
 
 double hypercomplex_norm2(JuliaFunction fn, const glm::dvec4& h) {
-    if (fn == JuliaFunction::Sqr) return (h.x * h.x + h.w * h.w) + (h.y * h.y + h.z * h.z);
+    if (fn == JuliaFunction::Sqr) return hypercomplex_sqr_norm2(h);
     return h.x * h.x + h.y * h.y + h.z * h.z + h.w * h.w;
 }
 
 glm::dvec4 hypercomplex_step(JuliaFunction fn, const glm::dvec4& h, const glm::dvec4& c,
                              const Complex& exponent) {
     switch (fn) {
-        case JuliaFunction::Sqr: {
-            const double yz = h.y * h.y + h.z * h.z, xw = h.x * h.x + h.w * h.w;
-            return {xw - yz + c.x, 2.0 * (h.x * h.y - h.z * h.w) + c.y,
-                    2.0 * (h.x * h.z - h.w * h.y) + c.z, 2.0 * (h.x * h.w + h.y * h.z) + c.w};
-        }
+        case JuliaFunction::Sqr: return hypercomplex_sqr_step(h, c);
         case JuliaFunction::Cube: return square(h) + c;
         case JuliaFunction::Reciprocal: return reciprocal(h) + c;
         default: return duplex_apply(fn, h, exponent) + c;

@@ -32,6 +32,16 @@ inline glm::dvec4 hypercomplex_product(const glm::dvec4& p, const glm::dvec4& q)
             p.w * q.x + p.z * q.y + p.y * q.z + p.x * q.w};
 }
 
+// sqr's escape norm and step, inline for the march (the general forms below use them).
+inline double hypercomplex_sqr_norm2(const glm::dvec4& h) {
+    return (h.x * h.x + h.w * h.w) + (h.y * h.y + h.z * h.z);
+}
+inline glm::dvec4 hypercomplex_sqr_step(const glm::dvec4& h, const glm::dvec4& c) {
+    const double yz = h.y * h.y + h.z * h.z, xw = h.x * h.x + h.w * h.w;
+    return {xw - yz + c.x, 2.0 * (h.x * h.y - h.z * h.w) + c.y,
+            2.0 * (h.x * h.z - h.w * h.y) + c.z, 2.0 * (h.x * h.w + h.y * h.z) + c.w};
+}
+
 // |h|^2, summed as POV-Ray's escape test sums it for `fn` (sqr pairs x with w, y with z).
 double hypercomplex_norm2(scene::JuliaFunction fn, const glm::dvec4& h);
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "render/shapes/julia_fractal.hpp"
 
@@ -88,7 +89,9 @@ std::shared_ptr<const JuliaGrid> JuliaGrid::build(const JuliaFractalShape& s) {
     auto corner = [&](int x, int y, int z, int size) {
         return glm::dvec3(-r) + grid->cell_ * glm::dvec3(x, y, z) * double(size);
     };
-    for (int cz = 0; cz < kCoarse; ++cz)
+    // Coarse layers shared out among threads (each writes its own cells).
+    auto layers = [&](int first, int stride) {
+    for (int cz = first; cz < kCoarse; cz += stride)
         for (int cy = 0; cy < kCoarse; ++cy)
             for (int cx = 0; cx < kCoarse; ++cx) {
                 const double big = grid->cell_ * kRefine;
@@ -104,11 +107,25 @@ std::shared_ptr<const JuliaGrid> JuliaGrid::build(const JuliaFractalShape& s) {
                                 maybe[size_t((z * n + y) * n + x)] = 1;
                         }
             }
+    };
+    const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+    std::vector<std::thread> helpers;
+    for (int t = 1; t < threads; ++t) helpers.emplace_back(layers, t, threads);
+    layers(0, threads);
+    for (std::thread& t : helpers) t.join();
     grid->maybe_.assign(maybe.size(), 0);
+    int* blo = grid->box_lo_;
+    int* bhi = grid->box_hi_;
+    blo[0] = blo[1] = blo[2] = n;
     for (int z = 0; z < n; ++z)
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
                 if (!maybe[size_t((z * n + y) * n + x)]) continue;
+                const int c[3] = {x, y, z};
+                for (int k = 0; k < 3; ++k) {
+                    blo[k] = std::min(blo[k], std::max(c[k] - 1, 0));
+                    bhi[k] = std::max(bhi[k], std::min(c[k] + 2, n));
+                }
                 for (int dz = std::max(z - 1, 0); dz <= std::min(z + 1, n - 1); ++dz)
                     for (int dy = std::max(y - 1, 0); dy <= std::min(y + 1, n - 1); ++dy)
                         for (int dx = std::max(x - 1, 0); dx <= std::min(x + 1, n - 1); ++dx)
@@ -123,42 +140,50 @@ bool JuliaGrid::may_contain(const glm::dvec3& p) const {
     return at(int(g.x), int(g.y), int(g.z));
 }
 
-bool JuliaGrid::segment_may_hit(const glm::dvec3& a, const glm::dvec3& b) const {
+bool JuliaGrid::maybe_span(const glm::dvec3& a, const glm::dvec3& b, double& last) const {
+    last = 1;
     const glm::dvec3 ga = (a - lo_) / cell_, d = (b - a) / cell_;
     for (int k = 0; k < 3; ++k)
         if (!std::isfinite(ga[k]) || !std::isfinite(d[k])) return true;  // let the march decide
-    // Clip the segment (parameter 0..1) to the grid's box.
+    // Clip the segment (parameter 0..1) to the box of the maybe-cells.
     double t0 = 0, t1 = 1;
     for (int k = 0; k < 3; ++k) {
+        if (box_lo_[k] >= box_hi_[k]) return false;  // no maybe-cell at all
         if (d[k] == 0) {
-            if (ga[k] < 0 || ga[k] > n_) return false;
+            if (ga[k] < box_lo_[k] || ga[k] > box_hi_[k]) return false;
             continue;
         }
-        double u = (0 - ga[k]) / d[k], v = (n_ - ga[k]) / d[k];
+        double u = (box_lo_[k] - ga[k]) / d[k], v = (box_hi_[k] - ga[k]) / d[k];
         if (u > v) std::swap(u, v);
         t0 = std::max(t0, u);
         t1 = std::min(t1, v);
     }
-    if (!(t0 <= t1)) return !(std::isfinite(t0) && std::isfinite(t1));
-    // Amanatides-Woo from the clipped start.
+    if (!(t0 <= t1)) return false;
+    // Amanatides-Woo from the clipped start, to the end: the last maybe-cell's exit.
     const glm::dvec3 p = ga + t0 * d;
     int cell[3], step[3];
     double next[3], delta[3];
     for (int k = 0; k < 3; ++k) {
-        cell[k] = std::clamp(int(std::floor(p[k])), 0, n_ - 1);
+        cell[k] = std::clamp(int(std::floor(p[k])), box_lo_[k], box_hi_[k] - 1);
         step[k] = d[k] > 0 ? 1 : (d[k] < 0 ? -1 : 0);
         delta[k] = step[k] != 0 ? 1 / std::fabs(d[k]) : HUGE_VAL;
         const double boundary = cell[k] + (step[k] > 0 ? 1 : 0);
         next[k] = step[k] != 0 ? t0 + (boundary - p[k]) / d[k] : HUGE_VAL;
     }
+    bool found = false;
     for (int guard = 0; guard < 3 * n_ + 3; ++guard) {
-        if (at(cell[0], cell[1], cell[2])) return true;
         const int k = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
-        if (next[k] > t1) return false;
+        if (at(cell[0], cell[1], cell[2])) {
+            found = true;
+            last = next[k];  // where the segment leaves this cell
+        }
+        if (next[k] > t1) break;
         cell[k] += step[k];
-        if (cell[k] < 0 || cell[k] >= n_) return false;
+        if (cell[k] < box_lo_[k] || cell[k] >= box_hi_[k]) break;
         next[k] += delta[k];
     }
+    if (!found) return false;
+    last = std::min(1.0, last);
     return true;
 }
 
