@@ -109,7 +109,7 @@ template <bool kSqr>
 bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
                            double& estimate, glm::dvec4* orbit) {
     glm::dvec4 z = start_point(s, p);
-    orbit[0] = z;
+    if (orbit) orbit[0] = z;
     glm::dvec4 chain = z;  // z_0 g(z_1) ... g(z_i-2)
     const Complex e(s.exponent.x, s.exponent.y);
     estimate = s.step;
@@ -126,7 +126,8 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
         }
         if (i >= 2)
             chain = hypercomplex_product(kSqr ? z : hypercomplex_chain_factor(s.function, z, e), chain);
-        orbit[i] = z = kSqr ? hypercomplex_sqr_step(z, s.c) : next_iterate(s, z);
+        z = kSqr ? hypercomplex_sqr_step(z, s.c) : next_iterate(s, z);
+        if (orbit) orbit[i] = z;
     }
     return true;
 }
@@ -143,7 +144,7 @@ bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm
                                                 : hypercomplex_estimate<false>(s, p, u, estimate, orbit);
     const bool cube = s.function == JuliaFunction::Cube;
     glm::dvec4 z = start_point(s, p);
-    orbit[0] = z;
+    if (orbit) orbit[0] = z;
     double d2 = 1;
     for (int i = 1; i <= s.iterations; ++i) {
         const double n2 = glm::dot(z, z);
@@ -153,7 +154,8 @@ bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm
             return false;
         }
         d2 *= cube ? 9 * n2 : 4 * n2;
-        orbit[i] = z = next_iterate(s, z);
+        z = next_iterate(s, z);
+        if (orbit) orbit[i] = z;
     }
     estimate = s.step;
     return true;
@@ -248,15 +250,18 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
     // One iteration stack for the whole search, as POV-Ray's: the normal's orbit keeps the
     // entries of earlier points past where the last one escaped.
     Orbit orbit(s.iterations);
+    // Where the inside test and the march agree the reported point is inside, its orbit
+    // complete: only its own is needed, and the steps before need not keep theirs.
+    glm::dvec4* const kept = general_function(s) ? orbit.data() : nullptr;
     depth = start;
     glm::dvec3 next = o + depth * u;
     double dist = 0, dist_next = 0;
-    bool current_in = iterate_estimate(s, next, u, dist, orbit.data());
+    bool current_in = iterate_estimate(s, next, u, dist, kept);
     if (current_in) {  // starting inside (a shadow or CSG ray): move off the start
         next += 2 * kJuliaTolerance * u;
         depth += 2 * kJuliaTolerance;
         if (depth > depth_max) return false;
-        current_in = iterate_estimate(s, next, u, dist, orbit.data());
+        current_in = iterate_estimate(s, next, u, dist, kept);
     }
     // March: each step at least `step`, until the state changes; `at` trails one step.
     if (!current_in) depth_max = std::min(depth_max, outside_beyond);
@@ -268,7 +273,7 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
         if (depth > depth_max) return false;
         at = next;
         next += dist * u;
-        if (iterate_estimate(s, next, u, dist_next, orbit.data()) != current_in) break;
+        if (iterate_estimate(s, next, u, dist_next, kept) != current_in) break;
         dist = dist_next;
     }
     depth -= dist;
@@ -279,7 +284,7 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
         if (depth + dist < unwanted) return false;
         dist *= 0.5;
         const glm::dvec3 mid = at + dist * u;
-        last = iterate(s, mid, orbit.data());
+        last = iterate(s, mid, kept);
         if (last == current_in) {
             at = mid;
             depth += dist;
@@ -292,7 +297,7 @@ bool first_crossing(const JuliaFractalShape& s, const glm::dvec3& o, const glm::
         depth += dist;
         at += dist * u;
         iterate(s, at, orbit.data());
-    } else if (last != current_in) {
+    } else if (last != current_in || !kept) {
         iterate(s, at, orbit.data());
     }
     normal = orbit_normal(s, orbit.data());
