@@ -149,7 +149,15 @@ bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm
     for (int i = 1; i <= s.iterations; ++i) {
         const double n2 = glm::dot(z, z);
         if (n2 > s.exit_value) {
-            estimate = (cube ? 1.0 / 3 : 0.5) * std::log(n2) / std::sqrt(d2);
+            // Only max(estimate, step) is used: where the tangent bound of ln n2 at the exit
+            // value already puts the estimate below the step, the logarithm is spared.
+            const double k = cube ? 1.0 / 3 : 0.5;
+            const double bound = k * (s.log_exit + (n2 - s.exit_value) / s.exit_value);
+            if (bound >= 0 && bound * bound * (1 + 1e-9) < s.step * s.step * d2 * (1 - 1e-9)) {
+                estimate = 0;
+                return false;
+            }
+            estimate = k * std::log(n2) / std::sqrt(d2);
             if (!(estimate >= 0)) estimate = 0;  // 0/0 or inf/inf: take the plain step
             return false;
         }
@@ -322,6 +330,7 @@ JuliaFractalShape make_julia_fractal(const scene::JuliaFractal& j) {
     const double r = j.bound_radius();
     s.radius2 = r * r;
     s.exit_value = j.exit_value();
+    s.log_exit = std::log(s.exit_value) * (1 + 1e-12) + 1e-300;  // rounded up
     s.grid = JuliaGrid::build(s);
     return s;
 }

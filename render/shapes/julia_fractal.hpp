@@ -23,6 +23,7 @@ struct JuliaFractalShape {
     glm::dvec4 slice{0, 0, 0, 1};
     double slice_distance = 0;
     double radius2 = 4, exit_value = 4;
+    double log_exit = 1.3862943611198906;  // ln exit_value, rounded up
     bool csg_child = false;  // lists every crossing, not only the first
     std::shared_ptr<const JuliaGrid> grid;  // where it can be inside; null: anywhere
 };
