@@ -140,17 +140,15 @@ bool JuliaGrid::may_contain(const glm::dvec3& p) const {
     return at(int(g.x), int(g.y), int(g.z));
 }
 
-bool JuliaGrid::maybe_span(const glm::dvec3& a, const glm::dvec3& b, double& last) const {
-    last = 1;
+// The parameter (0 at a, 1 at b) where the segment a-b enters its first maybe-cell, or
+// HUGE_VAL when it meets none. Amanatides-Woo within the maybe-cells' box.
+double JuliaGrid::first_maybe(const glm::dvec3& a, const glm::dvec3& b) const {
     const glm::dvec3 ga = (a - lo_) / cell_, d = (b - a) / cell_;
-    for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(ga[k]) || !std::isfinite(d[k])) return true;  // let the march decide
-    // Clip the segment (parameter 0..1) to the box of the maybe-cells.
     double t0 = 0, t1 = 1;
     for (int k = 0; k < 3; ++k) {
-        if (box_lo_[k] >= box_hi_[k]) return false;  // no maybe-cell at all
+        if (box_lo_[k] >= box_hi_[k]) return HUGE_VAL;  // no maybe-cell at all
         if (d[k] == 0) {
-            if (ga[k] < box_lo_[k] || ga[k] > box_hi_[k]) return false;
+            if (ga[k] < box_lo_[k] || ga[k] > box_hi_[k]) return HUGE_VAL;
             continue;
         }
         double u = (box_lo_[k] - ga[k]) / d[k], v = (box_hi_[k] - ga[k]) / d[k];
@@ -158,8 +156,7 @@ bool JuliaGrid::maybe_span(const glm::dvec3& a, const glm::dvec3& b, double& las
         t0 = std::max(t0, u);
         t1 = std::min(t1, v);
     }
-    if (!(t0 <= t1)) return false;
-    // Amanatides-Woo from the clipped start, to the end: the last maybe-cell's exit.
+    if (!(t0 <= t1)) return HUGE_VAL;
     const glm::dvec3 p = ga + t0 * d;
     int cell[3], step[3];
     double next[3], delta[3];
@@ -170,20 +167,27 @@ bool JuliaGrid::maybe_span(const glm::dvec3& a, const glm::dvec3& b, double& las
         const double boundary = cell[k] + (step[k] > 0 ? 1 : 0);
         next[k] = step[k] != 0 ? t0 + (boundary - p[k]) / d[k] : HUGE_VAL;
     }
-    bool found = false;
+    double entry = t0;
     for (int guard = 0; guard < 3 * n_ + 3; ++guard) {
+        if (at(cell[0], cell[1], cell[2])) return entry;
         const int k = next[0] < next[1] ? (next[0] < next[2] ? 0 : 2) : (next[1] < next[2] ? 1 : 2);
-        if (at(cell[0], cell[1], cell[2])) {
-            found = true;
-            last = next[k];  // where the segment leaves this cell
-        }
-        if (next[k] > t1) break;
+        if (next[k] > t1) return HUGE_VAL;
         cell[k] += step[k];
-        if (cell[k] < box_lo_[k] || cell[k] >= box_hi_[k]) break;
+        if (cell[k] < box_lo_[k] || cell[k] >= box_hi_[k]) return HUGE_VAL;
+        entry = next[k];
         next[k] += delta[k];
     }
-    if (!found) return false;
-    last = std::min(1.0, last);
+    return entry;  // not reached: a segment crosses at most 3n cells
+}
+
+bool JuliaGrid::maybe_span(const glm::dvec3& a, const glm::dvec3& b, double& last) const {
+    last = 1;
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(a[k]) || !std::isfinite(b[k])) return true;  // the march decides
+    if (first_maybe(a, b) == HUGE_VAL) return false;
+    // The same walk from b: where it enters the last maybe-cell the segment leaves it.
+    const double back = first_maybe(b, a);
+    if (back != HUGE_VAL) last = std::clamp(1 - back, 0.0, 1.0);
     return true;
 }
 

@@ -35,6 +35,7 @@ private:
     double lo_ = 0, cell_ = 1;
     int box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};  // the maybe-cells' range (hi past)
     std::vector<uint8_t> maybe_;
+    double first_maybe(const glm::dvec3& a, const glm::dvec3& b) const;
     bool at(int x, int y, int z) const { return maybe_[size_t((z * n_ + y) * n_ + x)] != 0; }
 };
 
