@@ -270,6 +270,8 @@ const IniKey kKeys[] = {
      [](Options& o, const Setting& s) { o.radiosity.subdivision.tolerance = to_positive(s); }},
     {"Radiosity_Subdivide_Budget",
      [](Options& o, const Setting& s) { o.radiosity.subdivision.budget = to_positive(s); }},
+    {"Radiosity_Min_Pixels",
+     [](Options& o, const Setting& s) { o.radiosity.subdivision.min_pixels = to_positive(s); }},
     {"Radiosity_Min_Element",
      [](Options& o, const Setting& s) { o.radiosity.subdivision.min_element = to_positive(s); }},
     {"Radiosity_Tolerance",

@@ -88,9 +88,19 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
         const std::vector<char> seen =
             rad::visible_sides(*mesh_, geometry, camera, render.width, render.height);
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
+        rad::SubdivisionOptions subdivision = options.subdivision;
+        // One pixel's footprint, from two neighbouring rays at the image's centre.
+        const auto r0 = camera.ray(render.width / 2.0, render.height / 2.0);
+        const auto r1 = camera.ray(render.width / 2.0 + 1, render.height / 2.0);
+        if (r0 && r1) {
+            const double c = glm::dot(glm::normalize(r0->dir), glm::normalize(r1->dir));
+            subdivision.pixel_angle = std::acos(std::clamp(c, -1.0, 1.0));
+            subdivision.pixel_offset = glm::length(r1->origin - r0->origin);
+            subdivision.eye = r0->origin;
+        }
         receivers_ = std::make_unique<rad::ReceiverMesh>(
             rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays,
-                         threads, solution_->G, options.subdivision, points_.get()));
+                         threads, solution_->G, subdivision, points_.get()));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         display_ = rad::make_preview(*mesh_, *receivers_, points_.get(), ds);
     } else {

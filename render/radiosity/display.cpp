@@ -83,7 +83,7 @@ DisplaySettings display_settings(const scene::Scene& scene, const RadiosityOptio
     // coarser cache serves them: radiosity_37.pov's error 0.0079 -> 0.0085 (POV's own 0.0104) at
     // 0.05 -> 0.1, its time 1.36 -> 0.82 s; radiosity2.pov's (0.02) 0.0059 either way.
     s.point_cache_error =
-        options.cache_error ? *options.cache_error : std::max(0.1, r.error_bound / 10);
+        options.cache_error ? *options.cache_error : std::max(0.2, r.error_bound / 10);
     s.min_reuse = r.minimum_reuse;
     s.max_reuse = std::max(r.maximum_reuse, r.minimum_reuse);
     s.camera = scene.camera.location;

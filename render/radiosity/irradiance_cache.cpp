@@ -58,7 +58,15 @@ bool IrradianceCache::lookup(const glm::dvec3 &p, const glm::dvec3 &n,
         continue;
       covered = covered || e < a;
       const double w = (1 - e / (kFade * a)) * (1 - e / (kFade * a));
-      sum += w * c.G;
+      // Extrapolated by the gradients, each channel kept within [0, 2 G] (a gradient from
+      // a few noisy strata must not overshoot).
+      const glm::dvec3 turn = glm::cross(c.normal, n);
+      glm::dvec3 value = c.G;
+      for (int ch = 0; ch < 3; ++ch)
+        value[ch] = std::clamp(c.G[ch] + glm::dot(d, c.gradients.translation[ch]) +
+                                   glm::dot(turn, c.gradients.rotation[ch]),
+                               0.0, 2 * c.G[ch]);
+      sum += w * value;
       wsum += w;
     }
   }
@@ -69,12 +77,14 @@ bool IrradianceCache::lookup(const glm::dvec3 &p, const glm::dvec3 &n,
 }
 
 void IrradianceCache::insert(const glm::dvec3 &p, const glm::dvec3 &n,
-                             const glm::dvec3 &G, double harmonic_distance) {
+                             const glm::dvec3 &G, double harmonic_distance,
+                             const IrradianceGradients &gradients) {
   const double camera = glm::length(p - s_.camera);
   Record c{p, n, G,
            std::max(std::clamp(harmonic_distance, s_.min_reuse * camera,
                                s_.max_reuse * camera),
-                    1e-9)};
+                    1e-9),
+           gradients};
   std::unique_lock lock(mutex_);
   const uint32_t index = uint32_t(records_.size());
   records_.push_back(c);

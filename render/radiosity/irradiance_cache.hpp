@@ -1,5 +1,5 @@
-// A Ward-style irradiance cache shared by the render threads (Ward 1988, without gradients, as
-// POV-Ray): a point reuses the records whose error e = |d|/R + sqrt(1 − n·n') is below the
+// A Ward-style irradiance cache shared by the render threads (Ward 1988; with Ward and
+// Heckbert's gradients where the gather gives them, which POV-Ray does not use): a point reuses the records whose error e = |d|/R + sqrt(1 − n·n') is below the
 // cache error a; its value is the average of every record with e < 3a weighted (1 − e/3a)²,
 // so weights fade to 0 at the edge of a record's reach: no seams where the set of records
 // changes, and each value averages several records' ray noise. (Plain Ward weights 1/e over
@@ -12,6 +12,8 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "render/radiosity/irradiance_gradients.hpp"
 
 namespace lumen::render::radiosity {
 
@@ -30,8 +32,9 @@ public:
     bool lookup(const glm::dvec3& p, const glm::dvec3& n, glm::dvec3& out) const;
     // A new record at p with incident light G, its radius the gather's harmonic mean distance
     // clamped by the reuse limits.
+    // `gradients` (irradiance_gradients.hpp) extrapolate the record to nearby points.
     void insert(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& G,
-                double harmonic_distance);
+                double harmonic_distance, const IrradianceGradients& gradients = {});
     size_t size() const;
     const CacheSettings& settings() const { return s_; }
 
@@ -39,6 +42,7 @@ private:
     struct Record {
         glm::dvec3 position, normal, G;
         double radius;
+        IrradianceGradients gradients;
     };
     // Records live in a grid per level, level k's cells 2^k base cells wide; a record goes to
     // the first level whose cells are as wide as its reach (so at most 2 cells per axis: far

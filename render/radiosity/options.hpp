@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec3.hpp>
+
 namespace lumen::render::radiosity {
 
 enum class Method { Auto, Matrix, Jacobi, GaussSeidel, Progressive };
@@ -18,6 +20,12 @@ struct SubdivisionOptions {
     double tolerance = 0.2;
     double min_element = 0;  // no split below this edge length; 0: patch size / 8
     double budget = 2;       // new vertices at most this × the vertex sides gathered
+    // No split of an element whose longest edge spans fewer than `min_pixels` pixels where it
+    // lies: smaller elements no longer change the image. The footprint of one pixel at p is
+    // pixel_offset + pixel_angle × |p - eye| (set from the camera; pixel_angle 0: no limit).
+    double min_pixels = 3;
+    double pixel_angle = 0, pixel_offset = 0;
+    glm::dvec3 eye{0};
 };
 
 struct RadiosityOptions {

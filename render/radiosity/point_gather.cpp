@@ -47,8 +47,9 @@ glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int l
     const int rays = level == 1 ? s_.rays : std::max(16, s_.rays / 4);
     const GatherResult r =
         gather_point(frame_.scene(), mesh_, frame_.geometry(), *B_,
-                     p + n * (1e-5 * mesh_.patch_size), n, rays, seed, this, level);
-    cache.insert(p, n, r.G, r.harmonic_distance);
+                     p + n * (1e-5 * mesh_.patch_size), n, rays, seed, this, level,
+                     s_.gradients);
+    cache.insert(p, n, r.G, r.harmonic_distance, r.gradients);
     if (level == 1)
         gather_ns_ += uint64_t(std::chrono::duration<double, std::nano>(
                                    std::chrono::steady_clock::now() - t0)

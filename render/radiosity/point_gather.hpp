@@ -23,6 +23,7 @@ struct PointGatherSettings {
     int bounces = 1;           // the deepest level that gathers
     CacheSettings cache;       // level 1's; deeper levels reuse twice as far
     glm::dvec3 ambient_emission{0};  // surface_light.hpp
+    bool gradients = true;           // records extrapolate (irradiance_gradients.hpp)
 };
 
 class PointGather final : public UnmeshedSurfaces {

@@ -195,6 +195,13 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                 longest = std::max(longest, glm::length(r.position(t.v[k]) -
                                                         r.position(t.v[(k + 1) % 3])));
             if (longest / 2 < min_edge) continue;
+            if (options.pixel_angle > 0) {
+                const glm::dvec3 centre =
+                    (r.position(t.v[0]) + r.position(t.v[1]) + r.position(t.v[2])) / 3.0;
+                const double pixel = options.pixel_offset +
+                                     options.pixel_angle * glm::length(centre - options.eye);
+                if (longest < options.min_pixels * pixel) continue;
+            }
             const double d = disagreement(t, S, options.tolerance, floor);
             if (d > 1) marks.emplace_back(d, i);
         }

@@ -139,23 +139,57 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
 GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
-                          uint64_t seed, const UnmeshedSurfaces* unmeshed, int level) {
+                          uint64_t seed, const UnmeshedSurfaces* unmeshed, int level,
+                          bool gradients) {
     GatherResult r;
     double inv_dist = 0, weight = 0;
+    // Each stratum's radiance and distance, for the gradients.
+    GatherStrata strata;
+    size_t at = 0;
+    auto record = [&](const glm::dvec3& weighted, double t) {  // weighted: w x radiance
+        if (!gradients) return;
+        strata.L[at] += weighted * double(strata.m * strata.n);  // each ray weighs 1/(m n)
+        strata.R[at] = t;
+    };
     cast_rays(
         mesh, geometry, origin, normal, seed, rays,
         [&](long, uint32_t col, double w, double t) {
             r.G += w * B[col];
             inv_dist += w / std::max(t, 1e-9);
             weight += w;
+            record(w * B[col], t);
         },
-        [&](const glm::dvec3& dir, double w) { r.G += w * background_radiance(scene, dir); },
+        [&](const glm::dvec3& dir, double w) {
+            const glm::dvec3 in = w * background_radiance(scene, dir);
+            r.G += in;
+            record(in, INFINITY);
+        },
         [&](const Hit& hit, const glm::dvec3& dir, double w) {
-            if (unmeshed) r.G += w * unmeshed->leaving(hit, dir, level);
+            if (unmeshed) {
+                const glm::dvec3 in = w * unmeshed->leaving(hit, dir, level);
+                r.G += in;
+                record(in, hit.t);
+            } else {
+                record(glm::dvec3(0), hit.t);
+            }
             inv_dist += w / std::max(hit.t, 1e-9);
             weight += w;
+        },
+        [&](int i, int j, int cells) {
+            if (!gradients) return;
+            if (strata.L.empty()) {
+                strata.m = strata.n = cells;
+                strata.L.assign(size_t(cells) * cells, glm::dvec3(0));
+                strata.R.assign(size_t(cells) * cells, INFINITY);
+            }
+            at = size_t(i * cells + j);
         });
     r.harmonic_distance = inv_dist > 0 ? weight / inv_dist : INFINITY;
+    if (gradients) {
+        glm::dvec3 t, b;
+        tangent_frame(normal, t, b);
+        r.gradients = irradiance_gradients(strata, t, b);
+    }
     return r;
 }
 

@@ -16,6 +16,7 @@
 #include "render/frame.hpp"
 #include "render/hit.hpp"
 #include "render/intersector.hpp"
+#include "render/radiosity/irradiance_gradients.hpp"
 #include "render/radiosity/options.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "scene/scene.hpp"
@@ -102,6 +103,7 @@ inline uint64_t side_seed(size_t u) { return 0x9e3779b97f4a7c15ULL * (u + 1); }
 struct GatherResult {
     glm::dvec3 G{0};
     double harmonic_distance = 0;  // of the rays that hit (infinite when none did)
+    IrradianceGradients gradients;  // when asked for
 };
 
 // Incident light at a point: `rays` stratified cosine rays from `origin` about the unit
@@ -112,7 +114,7 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
                           uint64_t seed, const UnmeshedSurfaces* unmeshed = nullptr,
-                          int level = 1);
+                          int level = 1, bool gradients = false);
 
 // The whole solution of the frame: direct light, form factors and the solve the options ask
 // for, all through the frame's geometry (the tracer's).

@@ -56,12 +56,18 @@ void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
         if (bary[k] > 0) on_hit(e, 2 * el.v[k] + side, w * bary[k], hit.t);
 }
 
+struct IgnoreStratum {
+    void operator()(int, int, int) const {}
+};
+
 // `rays` stratified cosine-weighted rays (rounded to a square) from `origin` about the unit
-// `normal`, deterministic for `seed`, each of weight 1/rays.
-template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed>
+// `normal`, deterministic for `seed`, each of weight 1/rays. on_stratum(i, j, cells) comes
+// before the ray of stratum i (in sin^2 theta) and j (in phi) of cells x cells.
+template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed,
+          class OnStratum = IgnoreStratum>
 void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& normal, uint64_t seed, int rays, OnHit&& on_hit,
-               OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}) {
+               OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}, OnStratum&& on_stratum = {}) {
     const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
     const double w = 1.0 / (cells * cells);
     std::mt19937_64 rng(seed);
@@ -70,6 +76,7 @@ void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
         for (int j = 0; j < cells; ++j) {
             const glm::dvec3 dir =
                 cosine_direction(normal, (i + U(rng)) / cells, (j + U(rng)) / cells);
+            on_stratum(i, j, cells);
             trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed);
         }
 }
