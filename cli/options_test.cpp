@@ -218,7 +218,8 @@ TEST(IniOptions, RadiosityKeys) {
                              "Radiosity_Cache_Error=0.2", "Radiosity_Display=gather",
                              "Radiosity_Tolerance=1e-3", "+RFsol.rad", "+RFI", "+RFO", "+R4",
                              "Radiosity_Subdivide=off", "Radiosity_Subdivide_Tolerance=0.3",
-                             "Radiosity_Min_Element=0.25", "Radiosity_Subdivide_Budget=2"});
+                             "Radiosity_Min_Element=0.25", "Radiosity_Subdivide_Budget=2",
+                             "Radiosity_Min_Pixels=1.5"});
     EXPECT_EQ(o.radiosity.enabled, false);
     EXPECT_EQ(o.radiosity.method, Method::GaussSeidel);
     EXPECT_EQ(o.radiosity.bounces, 0);
@@ -239,6 +240,8 @@ TEST(IniOptions, RadiosityKeys) {
     EXPECT_DOUBLE_EQ(o.radiosity.subdivision.tolerance, 0.3);
     EXPECT_DOUBLE_EQ(o.radiosity.subdivision.min_element, 0.25);
     EXPECT_DOUBLE_EQ(o.radiosity.subdivision.budget, 2);
+    EXPECT_DOUBLE_EQ(d.radiosity.subdivision.min_pixels, 3);
+    EXPECT_DOUBLE_EQ(o.radiosity.subdivision.min_pixels, 1.5);
     EXPECT_NE(error_of({"s.pov", "Radiosity_Method=lu"}).message.find("auto, matrix"),
               std::string::npos);
     EXPECT_NE(error_of({"s.pov", "Radiosity_Patch_Size=0"}).message.find("positive"),

@@ -105,6 +105,32 @@ TEST(RadiositySubdivision, StaysWithinTheBudget) {
     EXPECT_GT(double(r.added_vertices()), 0.05 * gathered - 3);  // it used the budget
 }
 
+TEST(RadiositySubdivision, NoElementSplitsBelowThePixelLimit) {
+    const std::string block =
+        "box { <-1, 0, -1>, <1, 1.5, 1> pigment { rgb 0.8 } finish { diffuse 0.8 } }\n";
+    // The camera 9 above the floor, 60 degrees over 80 pixels: a pixel spans at least
+    // 9 x 2 tan 30 / 80 = 0.13 on the floor, the elements 0.5 to 0.7.
+    const double pixel = 9 * 2 * std::tan(M_PI / 6) / 80;
+    {
+        Prepared p;
+        auto o = options();
+        o.subdivision.min_pixels = 8;  // 1.04: no element is that long
+        prepare(p, floor_scene(block), o);
+        EXPECT_EQ(p.pass.receivers()->split, 0u);
+    }
+    Prepared p;
+    prepare(p, floor_scene(block), options());  // the default, 3 pixels
+    const rad::ReceiverMesh& r = *p.pass.receivers();
+    EXPECT_GT(r.split, 0u);
+    for (const auto& t : r.leaves) {
+        if (t.depth == 0) continue;
+        double longest = 0;
+        for (int k = 0; k < 3; ++k)
+            longest = std::max(longest, glm::length(r.position(t.v[k]) - r.position(t.v[(k + 1) % 3])));
+        EXPECT_GE(longest, 1.5 * pixel);  // a child of an element at least 3 pixels long
+    }
+}
+
 TEST(RadiositySubdivision, UniformLightSplitsNothing) {
     Prepared p;
     // Nothing above the floor: every gather ray escapes to the same background.
