@@ -121,7 +121,7 @@ std::string RadiosityPass::summary() const {
         line += "form factors " + seconds(info_.form_factor_seconds) + " (" +
                 rad::form_factor_name(options_.form_factors) + " " +
                 (cube ? "resolution " + std::to_string(options_.hemicube_res)
-                      : std::to_string(options_.ff_rays) + " rays") +
+                      : std::to_string(info_.ff_rays) + " rays") +
                 "), solve " + seconds(info_.solve_seconds) +
                 " (" + info_.method + " " + std::to_string(info_.iterations) + ")";
     }

@@ -34,7 +34,8 @@ struct RadiosityOptions {
     std::optional<int> bounces;    // unset: the scene's recursion_limit; 0: to convergence
     double patch_size = 0;         // largest element edge in scene units; 0: from the bounds
     FormFactorMethod form_factors = FormFactorMethod::RayCast;
-    int ff_rays = 16;              // rays per vertex side for the form factors of the solve
+    int ff_rays = 0;               // rays per vertex side for the solve's form factors; 0:
+                                   // effective_ff_rays (scene_solution.hpp)
     int hemicube_res = 8;   // top face res x res, sides res x res/2: 192 rays at 8
     std::optional<int> gather_rays;     // final gather rays; unset: from the scene's count
     std::optional<double> cache_error;  // unset: from the scene's error_bound

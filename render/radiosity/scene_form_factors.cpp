@@ -135,6 +135,7 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
     VertexFormFactors F;
     F.env.assign(n, glm::dvec3(0));
     const FormFactorMethod method = options.form_factors;
+    const int ff_rays = effective_ff_rays(scene, options);
     const HemicubeDirections cube(method == FormFactorMethod::Hemicube ? options.hemicube_res : 2);
     const AnalyticPairs analytic(mesh, geometry);
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
@@ -176,7 +177,7 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                 } else {
                     if (method == FormFactorMethod::Analytic)
                         analytic.add(origin, normal, side_seed(u) ^ 0x5bd1e995, entries, counted);
-                    cast_rays(mesh, geometry, origin, normal, side_seed(u), options.ff_rays,
+                    cast_rays(mesh, geometry, origin, normal, side_seed(u), ff_rays,
                               on_hit, on_miss, on_unmeshed);
                 }
                 std::sort(entries.begin(), entries.end());

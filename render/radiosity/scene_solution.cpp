@@ -81,6 +81,13 @@ int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options
     return std::clamp(rl, 1, 20);
 }
 
+int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options) {
+    if (options.ff_rays > 0) return options.ff_rays;
+    const bool one_bounce = effective_bounces(scene, options) == 1 &&
+                            (options.method == Method::Auto || options.method == Method::Jacobi);
+    return one_bounce ? 4 : 16;
+}
+
 bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
                   glm::dvec3& n, double reach) {
     const Ray probe{p + n * reach, -n};
@@ -259,6 +266,7 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     const VertexFormFactors F =
         vertex_form_factors(scene, mesh, geometry, options, threads, &unmeshed);
     info.form_factor_seconds = seconds_since(t0);
+    info.ff_rays = effective_ff_rays(scene, options);
     t0 = std::chrono::steady_clock::now();
     check_reflectance(mesh, info.warnings);
 

@@ -56,6 +56,7 @@ struct Solution {
 struct SolveInfo {
     double form_factor_seconds = 0, solve_seconds = 0;
     int iterations = 0;
+    int ff_rays = 0;                    // rays per vertex side of the ray-cast form factors
     std::string method;                 // "jacobi", "matrix", ...
     std::vector<std::string> warnings;  // stability reports
 };
@@ -123,6 +124,10 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
 
 // The bounce count in effect: the option, else the scene's recursion_limit.
 int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options);
+// Form-factor rays per vertex side: Radiosity_FF_Rays, else 16; 4 where the solve stops at
+// one bounce (B = E + ρH needs no form factors: they feed only the G of the vertices the
+// camera does not see, for reflections), which costs radiosity2.pov a third of its time.
+int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options);
 
 // Runs fn(begin, end) over [0, n) on up to `threads` threads (in chunks).
 void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn);
