@@ -10,6 +10,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/stop_request.hpp"
+
 namespace lumen::render::radiosity {
 namespace {
 
@@ -85,42 +87,59 @@ void report_slivers(const SceneMesh& m, std::vector<std::string>& warnings) {
 }
 
 void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
-    // Elements are at most a patch wide, so an element that covers another's centroid has its
-    // own centroid within one cell (of a patch) of it.
-    const double cell = std::max(m.patch_size, 1e-9);
+    // Each element goes into every cell its box overlaps; an element can cover another's
+    // centroid only if it is listed in the centroid's cell. The cells are about the mean
+    // element's size (at least 1/16 of a patch), so a crowd of small elements (a detailed
+    // model) does not pile into one patch-wide cell and make the check quadratic.
+    std::vector<glm::dvec3> centroid(m.elements.size());
+    double mean_extent = 0;
+    for (uint32_t i = 0; i < m.elements.size(); ++i) {
+        const MeshElement& e = m.elements[i];
+        centroid[i] = (corner(m, e, 0) + corner(m, e, 1) + corner(m, e, 2)) / 3.0;
+        glm::dvec3 lo = corner(m, e, 0), hi = lo;
+        for (int k = 1; k < 3; ++k) {
+            lo = glm::min(lo, corner(m, e, k));
+            hi = glm::max(hi, corner(m, e, k));
+        }
+        const glm::dvec3 d = hi - lo;
+        mean_extent += std::max({d.x, d.y, d.z}) / double(m.elements.size());
+    }
+    const double cell = std::max({mean_extent, m.patch_size / 16, 1e-9});
     auto key = [&](const glm::dvec3& p) {
         return CellKey{long(std::floor(p.x / cell)), long(std::floor(p.y / cell)),
                        long(std::floor(p.z / cell))};
     };
-    std::vector<glm::dvec3> centroid(m.elements.size());
+    const double plane_tol = 1e-6 * std::max(m.patch_size, 1e-9);
     std::unordered_map<CellKey, std::vector<uint32_t>, CellHash> cells;
     for (uint32_t i = 0; i < m.elements.size(); ++i) {
+        if (i % 4096 == 0) throw_if_stop_requested();
         const MeshElement& e = m.elements[i];
-        centroid[i] = (corner(m, e, 0) + corner(m, e, 1) + corner(m, e, 2)) / 3.0;
-        cells[key(centroid[i])].push_back(i);
+        glm::dvec3 lo = corner(m, e, 0), hi = lo;
+        for (int k = 1; k < 3; ++k) {
+            lo = glm::min(lo, corner(m, e, k));
+            hi = glm::max(hi, corner(m, e, k));
+        }
+        const CellKey a = key(lo - plane_tol), b = key(hi + plane_tol);
+        for (long z = a.z; z <= b.z; ++z)
+            for (long y = a.y; y <= b.y; ++y)
+                for (long x = a.x; x <= b.x; ++x) cells[{x, y, z}].push_back(i);
     }
-    const double plane_tol = 1e-6 * cell;
     std::map<std::pair<const scene::Object*, const scene::Object*>, bool> pairs;
     for (uint32_t i = 0; i < m.elements.size(); ++i) {
+        if (i % 4096 == 0) throw_if_stop_requested();
         const MeshElement& e = m.elements[i];
-        const CellKey c = key(centroid[i]);
-        for (long dz = -1; dz <= 1; ++dz)
-            for (long dy = -1; dy <= 1; ++dy)
-                for (long dx = -1; dx <= 1; ++dx) {
-                    const auto it = cells.find({c.x + dx, c.y + dy, c.z + dz});
-                    if (it == cells.end()) continue;
-                    for (uint32_t j : it->second) {
-                        const MeshElement& f = m.elements[j];
-                        if (f.object == e.object || glm::dot(e.normal, f.normal) < 1 - 1e-9)
-                            continue;
-                        const double off = glm::dot(centroid[i] - corner(m, f, 0), f.normal);
-                        if (std::fabs(off) > plane_tol) continue;
-                        if (!contains(m, f, centroid[i], plane_tol)) continue;
-                        if (same_material(m, e, f)) continue;
-                        pairs[earlier(e.object, f.object) ? std::pair(e.object, f.object)
-                                                          : std::pair(f.object, e.object)] = true;
-                    }
-                }
+        const auto it = cells.find(key(centroid[i]));
+        if (it == cells.end()) continue;
+        for (uint32_t j : it->second) {
+            const MeshElement& f = m.elements[j];
+            if (f.object == e.object || glm::dot(e.normal, f.normal) < 1 - 1e-9) continue;
+            const double off = glm::dot(centroid[i] - corner(m, f, 0), f.normal);
+            if (std::fabs(off) > plane_tol) continue;
+            if (!contains(m, f, centroid[i], plane_tol)) continue;
+            if (same_material(m, e, f)) continue;
+            pairs[earlier(e.object, f.object) ? std::pair(e.object, f.object)
+                                              : std::pair(f.object, e.object)] = true;
+        }
     }
     std::vector<std::pair<const scene::Object*, const scene::Object*>> sorted;
     for (const auto& [objects, _] : pairs) sorted.push_back(objects);

@@ -102,6 +102,23 @@ TEST(Mesher, QuadricsAndTorus) {
     }
 }
 
+TEST(Mesher, AStretchAlongTheAxisDoesNotMultiplyTheCircles) {
+    // A disc-like cylinder (radius 4, length 1 along z) scaled 1000 along z: its circles
+    // stay as they were, only the length is split (patio-radio_36.pov's balconies).
+    const glm::dmat4 stretch = glm::scale(glm::dmat4(1.0), glm::dvec3(1, 1, 1000));
+    const auto plain = mesh(object(scene::Cylinder{{0, 0, 0}, {0, 0, 1}, 4, false}), 10);
+    const auto long_one = mesh(object(scene::Cylinder{{0, 0, 0}, {0, 0, 1}, 4, false}, stretch), 10);
+    // min_segments (8) chords around: 2.6% short of the true circumference.
+    EXPECT_NEAR(total_area(long_one), 2 * pi * 4 * 1000 + 2 * pi * 16, 0.03 * 2 * pi * 4 * 1000);
+    EXPECT_LE(longest_edge(long_one), 10 * 1.01);
+    // The lateral surface needs 100 rows of 10; the caps need nothing more than unscaled.
+    EXPECT_LT(long_one.size(), plain.size() + 100 * 2 * 16);
+    // A uniform scale still refines everything.
+    const auto big = mesh(object(scene::Cylinder{{0, 0, 0}, {0, 0, 1}, 4, false},
+                                 glm::scale(glm::dmat4(1.0), glm::dvec3(10))), 10);
+    EXPECT_LE(longest_edge(big), 10 * 1.01);
+}
+
 TEST(Mesher, PlaneClippedToTheBounds) {
     const auto floor = mesh(object(scene::Plane{{0, 1, 0}, 0.25}), 0.3);
     EXPECT_NEAR(total_area(floor), 4.0, 1e-9);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include <glm/common.hpp>
@@ -22,12 +23,13 @@ namespace {
 std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry,
                                                 std::vector<std::string>& warnings) {
     std::vector<const PlacedObject*> out;
+    std::set<std::string> said;  // objects made in a loop share their location: say it once
     for (const PlacedObject& p : geometry.placed_objects()) {
         const scene::Object& o = *p.object;
         if (p.no_radiosity || p.csg || !meshable(o) || never_diffuse(p.texture)) continue;
-        if (p.clipped)
-            warnings.push_back(o.loc.str() +
-                               ": warning: radiosity meshes this object without its clipped_by");
+        std::string text =
+            o.loc.str() + ": warning: radiosity meshes this object without its clipped_by";
+        if (p.clipped && said.insert(text).second) warnings.push_back(std::move(text));
         out.push_back(&p);
     }
     return out;
