@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "base/stop_request.hpp"
 #include "render/radiosity/mesh_checks.hpp"
 #include "render/radiosity/mesher.hpp"
 #include "render/radiosity/surface_light.hpp"
@@ -157,9 +158,11 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
     opt.max_edge = mesh.patch_size;
 
     Welder welder(mesh, mesh.patch_size * 1e-6, ambient_emission);
-    for (const PlacedObject* piece : pieces)
+    for (const PlacedObject* piece : pieces) {
+        throw_if_stop_requested();  // SIGINT/SIGTERM: a big scene meshes for a while
         for (const Patch& p : mesh_object(*piece->object, piece->to_world, opt, {}))
             add_patch(mesh, welder, p, *piece);
+    }
 
     // Vertex areas and the direction into the adjacent elements (gathers start a hair inside
     // them, off shared edges and corners).
