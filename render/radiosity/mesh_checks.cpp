@@ -87,7 +87,7 @@ void report_slivers(const SceneMesh& m, std::vector<std::string>& warnings) {
 }
 
 void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
-    // Each element goes into every cell its box overlaps; an element can cover another's
+    // Each element goes into every cell its box (SceneMesh::boxes) overlaps; an element can cover another's
     // centroid only if it is listed in the centroid's cell. The cells are about the mean
     // element's size (at least 1/16 of a patch), so a crowd of small elements (a detailed
     // model) does not pile into one patch-wide cell and make the check quadratic.
@@ -96,12 +96,7 @@ void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
     for (uint32_t i = 0; i < m.elements.size(); ++i) {
         const MeshElement& e = m.elements[i];
         centroid[i] = (corner(m, e, 0) + corner(m, e, 1) + corner(m, e, 2)) / 3.0;
-        glm::dvec3 lo = corner(m, e, 0), hi = lo;
-        for (int k = 1; k < 3; ++k) {
-            lo = glm::min(lo, corner(m, e, k));
-            hi = glm::max(hi, corner(m, e, k));
-        }
-        const glm::dvec3 d = hi - lo;
+        const glm::dvec3 d = m.boxes[i].hi - m.boxes[i].lo;
         mean_extent += std::max({d.x, d.y, d.z}) / double(m.elements.size());
     }
     const double cell = std::max({mean_extent, m.patch_size / 16, 1e-9});
@@ -113,13 +108,7 @@ void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
     std::unordered_map<CellKey, std::vector<uint32_t>, CellHash> cells;
     for (uint32_t i = 0; i < m.elements.size(); ++i) {
         if (i % 4096 == 0) throw_if_stop_requested();
-        const MeshElement& e = m.elements[i];
-        glm::dvec3 lo = corner(m, e, 0), hi = lo;
-        for (int k = 1; k < 3; ++k) {
-            lo = glm::min(lo, corner(m, e, k));
-            hi = glm::max(hi, corner(m, e, k));
-        }
-        const CellKey a = key(lo - plane_tol), b = key(hi + plane_tol);
+        const CellKey a = key(m.boxes[i].lo - plane_tol), b = key(m.boxes[i].hi + plane_tol);
         for (long z = a.z; z <= b.z; ++z)
             for (long y = a.y; y <= b.y; ++y)
                 for (long x = a.x; x <= b.x; ++x) cells[{x, y, z}].push_back(i);

@@ -104,8 +104,6 @@ glm::dvec3 chain_gradient(const glm::dvec4& zn, const glm::dvec4& D) {
 // Hypercomplex numbers: |z|^2 over its rate of fall along u (from the chain above), used
 // only when that lies between 1 and 30 steps, else the step. Measured against POV-Ray's
 // silhouettes (|z|^2 itself, not its excess over the exit value; the 30 steps).
-// kSqr: the same arithmetic with sqr's operations inlined (the march's hot loop).
-template <bool kSqr>
 bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
                            double& estimate, glm::dvec4* orbit) {
     glm::dvec4 z = start_point(s, p);
@@ -114,7 +112,7 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
     const Complex e(s.exponent.x, s.exponent.y);
     estimate = s.step;
     for (int i = 1; i <= s.iterations; ++i) {
-        const double n2 = kSqr ? hypercomplex_sqr_norm2(z) : norm2_of(s, z);
+        const double n2 = norm2_of(s, z);
         if (n2 > s.exit_value) {
             // The slope ignores w's change along the ray (measured, as for the normal).
             const double slope =
@@ -124,9 +122,11 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
                 estimate = n2 / slope;
             return false;
         }
-        if (i >= 2)
-            chain = hypercomplex_product(kSqr ? z : hypercomplex_chain_factor(s.function, z, e), chain);
-        z = kSqr ? hypercomplex_sqr_step(z, s.c) : next_iterate(s, z);
+        if (i >= 2)  // sqr's factor is z itself: no call on the hot path
+            chain = hypercomplex_product(
+                s.function == JuliaFunction::Sqr ? z : hypercomplex_chain_factor(s.function, z, e),
+                chain);
+        z = next_iterate(s, z);
         if (orbit) orbit[i] = z;
     }
     return true;
@@ -140,8 +140,7 @@ bool hypercomplex_estimate(const JuliaFractalShape& s, const glm::dvec3& p, cons
 bool iterate_estimate(const JuliaFractalShape& s, const glm::dvec3& p, const glm::dvec3& u,
                       double& estimate, glm::dvec4* orbit) {
     if (s.algebra == JuliaAlgebra::Hypercomplex)
-        return s.function == JuliaFunction::Sqr ? hypercomplex_estimate<true>(s, p, u, estimate, orbit)
-                                                : hypercomplex_estimate<false>(s, p, u, estimate, orbit);
+        return hypercomplex_estimate(s, p, u, estimate, orbit);
     const bool cube = s.function == JuliaFunction::Cube;
     glm::dvec4 z = start_point(s, p);
     if (orbit) orbit[0] = z;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <thread>
 
+#include "render/interval.hpp"
 #include "render/shapes/julia_fractal.hpp"
 
 namespace lumen::render {
@@ -17,43 +18,27 @@ namespace {
 constexpr int kCoarse = 16, kRefine = 4;  // 64^3 cells
 constexpr double kSlack = 1e-12;          // relative widening per iteration
 
-struct Iv {
-    double lo, hi;
-};
-Iv operator+(Iv a, Iv b) { return {a.lo + b.lo, a.hi + b.hi}; }
-Iv operator-(Iv a, Iv b) { return {a.lo - b.hi, a.hi - b.lo}; }
-Iv operator*(double k, Iv a) { return k >= 0 ? Iv{k * a.lo, k * a.hi} : Iv{k * a.hi, k * a.lo}; }
-Iv operator*(Iv a, Iv b) {
-    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
-}
-Iv sq(Iv a) {
-    const double l = a.lo * a.lo, h = a.hi * a.hi;
-    if (a.lo <= 0 && a.hi >= 0) return {0, std::max(l, h)};
-    return {std::min(l, h), std::max(l, h)};
-}
-
 // True when every point of the box escapes before max_iteration (iterate()'s test on
 // z_0 .. z_N-1).
 bool box_escapes(const JuliaFractalShape& s, const glm::dvec3& lo, const glm::dvec3& hi) {
-    Iv z[4] = {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, {0, 0}};
-    z[3] = (1 / s.slice.w) * (Iv{s.slice_distance, s.slice_distance} - s.slice.x * z[0] -
+    Interval z[4] = {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, {0, 0}};
+    z[3] = (1 / s.slice.w) * (Interval{s.slice_distance, s.slice_distance} - s.slice.x * z[0] -
                               s.slice.y * z[1] - s.slice.z * z[2]);
     const bool cube = s.function == scene::JuliaFunction::Cube;
     const bool hyper = s.algebra == scene::JuliaAlgebra::Hypercomplex;
     for (int i = 0; i < s.iterations; ++i) {
-        Iv sqs[4] = {sq(z[0]), sq(z[1]), sq(z[2]), sq(z[3])};
+        Interval sqs[4] = {square(z[0]), square(z[1]), square(z[2]), square(z[3])};
         if (sqs[0].lo + sqs[1].lo + sqs[2].lo + sqs[3].lo > s.exit_value * (1 + 1e-9))
             return true;
-        const Iv d = sqs[1] + sqs[2] + sqs[3];
-        Iv next[4];
+        const Interval d = sqs[1] + sqs[2] + sqs[3];
+        Interval next[4];
         if (hyper) {  // sqr, and cube, which POV-Ray also squares (render/shapes/hypercomplex.cpp)
             next[0] = sqs[0] + sqs[3] - sqs[1] - sqs[2];
             next[1] = 2 * (z[0] * z[1] - z[2] * z[3]);
             next[2] = 2 * (z[0] * z[2] - z[3] * z[1]);
             next[3] = 2 * (z[0] * z[3] + z[1] * z[2]);
         } else if (cube) {
-            const Iv t = 3 * sqs[0] - d;
+            const Interval t = 3 * sqs[0] - d;
             next[0] = z[0] * (sqs[0] - 3 * d);
             for (int k = 1; k < 4; ++k) next[k] = t * z[k];
         } else {
@@ -62,7 +47,7 @@ bool box_escapes(const JuliaFractalShape& s, const glm::dvec3& lo, const glm::dv
         }
         double big = 0;
         for (int k = 0; k < 4; ++k) {
-            next[k] = next[k] + Iv{s.c[k], s.c[k]};
+            next[k] = next[k] + Interval{s.c[k], s.c[k]};
             big = std::max({big, std::fabs(next[k].lo), std::fabs(next[k].hi)});
         }
         if (!(big < 1e100)) return false;  // no longer decidable

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "render/interval.hpp"
+
 namespace lumen::render {
 
 namespace {
@@ -14,31 +16,14 @@ namespace {
 constexpr int kPatches = 24;          // per face edge: 6 * 24^2 patches
 constexpr double kRounding = 1e-12;   // relative slack for the floating-point evaluation
 
-struct Interval {
-    double lo, hi;
-};
-
-Interval times(Interval a, Interval b) {
-    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
-}
-
-Interval power(Interval a, int k) {
-    if (k == 0) return {1, 1};
-    const double l = std::pow(a.lo, k), h = std::pow(a.hi, k);
-    if (k % 2 == 1) return {l, h};
-    if (a.lo <= 0 && a.hi >= 0) return {0, std::max(l, h)};
-    return {std::min(l, h), std::max(l, h)};
-}
-
 // The range of H_d on the part of the unit sphere over one patch of a cube face.
 Interval on_sphere(const std::vector<PolyTerm>& terms, int degree, const Interval xyz[3]) {
     Interval h{0, 0};
     double magnitude = 0;
     for (const PolyTerm& t : terms) {
         if (t.i + t.j + t.k != degree) continue;
-        Interval v = times(times(power(xyz[0], t.i), power(xyz[1], t.j)), power(xyz[2], t.k));
-        v = times(v, {t.c, t.c});
+        Interval v = power(xyz[0], t.i) * power(xyz[1], t.j) * power(xyz[2], t.k);
+        v = v * Interval{t.c, t.c};
         h.lo += v.lo;
         h.hi += v.hi;
         magnitude += std::max(std::fabs(v.lo), std::fabs(v.hi));
