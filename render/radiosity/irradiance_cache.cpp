@@ -44,12 +44,14 @@ bool IrradianceCache::lookup(const glm::dvec3 &p, const glm::dvec3 &n,
     const auto it = grid_.find(cell_of(p, level));
     if (it == grid_.end())
       continue;
-    for (uint32_t i : it->second) {
-      const Record &c = records_[i];
+    for (const Entry &entry : it->second) {
+      const glm::dvec3 d = p - entry.position;
+      if (glm::dot(d, d) >= entry.reach2)
+        continue; // e >= |d| / R >= 3a
+      const Record &c = records_[entry.index];
       const double nd = glm::dot(n, c.normal);
       if (nd < 0.9)
         continue;
-      const glm::dvec3 d = p - c.position;
       if (std::fabs(glm::dot(d, n)) > 0.1 * c.radius)
         continue; // another surface
       const double e =
@@ -97,7 +99,7 @@ void IrradianceCache::insert(const glm::dvec3 &p, const glm::dvec3 &n,
   for (long long x = lo[0]; x <= hi[0]; ++x)
     for (long long y = lo[1]; y <= hi[1]; ++y)
       for (long long z = lo[2]; z <= hi[2]; ++z)
-        grid_[{x, y, z, level}].push_back(index);
+        grid_[{x, y, z, level}].push_back({c.position, r * r, index});
 }
 
 size_t IrradianceCache::size() const {

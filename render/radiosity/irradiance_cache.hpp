@@ -60,7 +60,14 @@ private:
     double cell_ = 1;
     mutable std::shared_mutex mutex_;
     std::vector<Record> records_;
-    std::unordered_map<Cell, std::vector<uint32_t>, CellHash> grid_;
+    // What a lookup reads of each record in a cell before it needs the record: most records
+    // of a cell lie beyond their reach (3a R) from the point.
+    struct Entry {
+        glm::dvec3 position;
+        double reach2;  // (3 a R)^2
+        uint32_t index;
+    };
+    std::unordered_map<Cell, std::vector<Entry>, CellHash> grid_;
     uint64_t levels_ = 0;  // bit k: level k holds records
 };
 

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "render/radiosity/form_factor.hpp"
 #include "render/radiosity/patch.hpp"
+#include "render/radiosity/sample_rng.hpp"
 #include "render/radiosity/scene_solution.hpp"
 #include "render/radiosity/vertex_rays.hpp"
 
@@ -71,8 +71,7 @@ public:
         near(origin, counted);
         std::sort(counted.begin(), counted.end());
         counted.erase(std::unique(counted.begin(), counted.end()), counted.end());
-        std::mt19937_64 rng(seed);
-        std::uniform_real_distribution<double> U(0.0, 1.0);
+        SampleRng rng(seed);
         for (uint32_t e : counted) {
             const MeshElement& el = mesh_.elements[e];
             const Patch tri = make_patch({mesh_.vertices[el.v[0]].position,
@@ -84,7 +83,7 @@ public:
             constexpr int kSamples = 4;  // stratified 2 x 2 over the element
             for (int k = 0; k < kSamples; ++k) {
                 const glm::dvec3 p =
-                    sample_point(tri, ((k & 1) + U(rng)) / 2, ((k >> 1) + U(rng)) / 2);
+                    sample_point(tri, ((k & 1) + rng.uniform()) / 2, ((k >> 1) + rng.uniform()) / 2);
                 const glm::dvec3 d = p - origin;
                 const double dist = glm::length(d);
                 Hit hit;
@@ -163,10 +162,8 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                     // A random turn about the normal per vertex side breaks the aliasing.
                     glm::dvec3 t, b;
                     tangent_frame(normal, t, b);
-                    std::mt19937_64 turn_rng(side_seed(u));
                     const double turn =
-                        2 * std::numbers::pi *
-                        std::uniform_real_distribution<double>(0, 1)(turn_rng);
+                        2 * std::numbers::pi * SampleRng(side_seed(u)).uniform();
                     const glm::dvec3 x = std::cos(turn) * t + std::sin(turn) * b,
                                      y = glm::cross(normal, x);
                     for (size_t k = 0; k < cube.dir.size(); ++k) {

@@ -8,6 +8,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "base/stop_request.hpp"
 #include "render/radiosity/mesh_checks.hpp"
@@ -121,8 +122,15 @@ void build_grid(SceneMesh& m) {
     for (size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
     m.cell_start = count;
     m.cell_items.resize(count[cells]);
-    for (uint32_t i = 0; i < m.boxes.size(); ++i)
-        each_cell(m.boxes[i], [&](size_t c) { m.cell_items[count[c]++] = i; });
+    m.cell_slots.resize(count[cells]);
+    m.grid_bounds = all;
+    for (uint32_t i = 0; i < m.boxes.size(); ++i) {
+        const uint32_t slot = m.object_slot.at(m.elements[i].object);
+        each_cell(m.boxes[i], [&](size_t c) {
+            m.cell_slots[count[c]] = slot;
+            m.cell_items[count[c]++] = i;
+        });
+    }
 }
 
 }  // namespace
@@ -206,23 +214,35 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
 
 long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
                      const scene::Object* object, glm::dvec3& bary) const {
-    // Fast path: the elements listed in the grid cell of the hit point.
-    if (object && !cell_start.empty()) {
-        const long e = find_near(origin + t * dir, object, slack, bary);
-        if (e >= 0) return e;
+    const Bvh* tree = &bvh;
+    const std::vector<uint32_t>* ids = nullptr;  // null: positions index `elements`
+    // Nearest element from the grid (within half a patch: curved surfaces lie up to a facet's
+    // sagitta off their elements); taken at once when within `slack` of its plane.
+    long near = -1;
+    glm::dvec3 near_bary;
+    if (object) {
+        const auto slot = object_slot.find(object);
+        if (slot == object_slot.end()) return -1;  // not meshed: the common miss, kept cheap
+        tree = &per_object[slot->second].bvh;
+        ids = &per_object[slot->second].elements;
+        if (!cell_start.empty()) {
+            const glm::dvec3 p = origin + t * dir;
+            const double reach = std::max(slack, 0.5 * patch_size);
+            if (glm::any(glm::lessThan(p, grid_bounds.lo - reach)) ||
+                glm::any(glm::greaterThan(p, grid_bounds.hi + reach)))
+                return -1;  // e.g. a plane's hit beyond its meshed part
+            double h = 0;
+            near = find_near(p, slot->second, 0.5 * patch_size, near_bary, h);
+            if (near >= 0 && h <= slack) {
+                bary = near_bary;
+                return near;
+            }
+        }
     }
     long best = -1;
     double best_err = slack;
     double tmax = t + slack;
     const SlabRay ray(origin, dir);
-    const Bvh* tree = &bvh;
-    const std::vector<uint32_t>* ids = nullptr;  // null: positions index `elements`
-    if (object) {
-        const auto slot = object_slot.find(object);
-        if (slot == object_slot.end()) return -1;
-        tree = &per_object[slot->second].bvh;
-        ids = &per_object[slot->second].elements;
-    }
     tree->traverse(ray, t - slack, tmax, [&](uint32_t pos) {
         const uint32_t k = tree->order()[pos];
         const uint32_t i = ids ? (*ids)[k] : k;
@@ -249,20 +269,21 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
         const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
         bary = {1 - uc - wc, uc, wc};
     });
-    // Curved surfaces: the true hit lies up to a facet's sagitta off its element.
-    if (best < 0 && object && !cell_start.empty())
-        best = find_near(origin + t * dir, object, 0.5 * patch_size, bary);
+    if (best < 0 && near >= 0) {  // curved surfaces: the nearest facet
+        bary = near_bary;
+        best = near;
+    }
     return best;
 }
 
-long SceneMesh::find_near(const glm::dvec3& p, const scene::Object* object, double slack,
-                          glm::dvec3& bary) const {
+long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary,
+                          double& height) const {
     long best = -1;
     double best_h = slack;
     const size_t c = cell_index(*this, cell_of(*this, p));
     for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+        if (cell_slots[k] != slot) continue;
         const MeshElement& e = elements[cell_items[k]];
-        if (e.object != object) continue;
         const glm::dvec3 a = vertices[e.v[0]].position;
         const double h = std::fabs(glm::dot(p - a, e.normal));
         if (h > best_h) continue;
@@ -281,6 +302,7 @@ long SceneMesh::find_near(const glm::dvec3& p, const scene::Object* object, doub
         best_h = h;
         if (h == 0) break;
     }
+    height = best_h;
     return best;
 }
 

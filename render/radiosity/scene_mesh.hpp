@@ -66,6 +66,8 @@ struct SceneMesh {
     double grid_cell = 1;
     glm::ivec3 grid_size{0};
     std::vector<uint32_t> cell_start, cell_items;
+    std::vector<uint32_t> cell_slots;  // the object slot of each cell item (no element load to skip it)
+    Aabb grid_bounds;                  // of every element: hits farther out find none
     double patch_size = 0;        // largest element edge used
     Aabb bounds;                  // of the finite objects
     std::vector<std::string> warnings;  // with source locations
@@ -77,10 +79,11 @@ struct SceneMesh {
     long find(const glm::dvec3& origin, const glm::dvec3& dir, double t, double slack,
               const scene::Object* object, glm::dvec3& bary) const;
 
-    // The element of `object` nearest to surface point p (within `slack` of its plane) whose
-    // projection contains p, from the grid cell of p; -1 when none.
-    long find_near(const glm::dvec3& p, const scene::Object* object, double slack,
-                   glm::dvec3& bary) const;
+    // The element of the object in `slot` nearest to surface point p (within `slack` of its
+    // plane) whose projection contains p, from the grid cell of p; -1 when none. `height`
+    // receives its distance from that plane.
+    long find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary,
+                   double& height) const;
 };
 
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).

@@ -3,12 +3,12 @@
 #pragma once
 #include <cmath>
 #include <limits>
-#include <random>
 
 #include <glm/geometric.hpp>
 
 #include "render/intersector.hpp"
 #include "render/radiosity/ray_cast.hpp"
+#include "render/radiosity/sample_rng.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 
 namespace lumen::render::radiosity {
@@ -70,12 +70,11 @@ void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
                OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}, OnStratum&& on_stratum = {}) {
     const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
     const double w = 1.0 / (cells * cells);
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> U(0.0, 1.0);
+    SampleRng rng(seed);
     for (int i = 0; i < cells; ++i)
         for (int j = 0; j < cells; ++j) {
             const glm::dvec3 dir =
-                cosine_direction(normal, (i + U(rng)) / cells, (j + U(rng)) / cells);
+                cosine_direction(normal, (i + rng.uniform()) / cells, (j + rng.uniform()) / cells);
             on_stratum(i, j, cells);
             trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed);
         }
