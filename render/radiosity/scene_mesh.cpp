@@ -121,6 +121,20 @@ void build_grid(SceneMesh& m) {
     for (const Aabb& b : m.boxes) each_cell(b, [&](size_t c) { ++count[c + 1]; });
     for (size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
     m.cell_start = count;
+    m.frames.reserve(m.elements.size());
+    for (const MeshElement& e : m.elements) {
+        SceneMesh::Frame f;
+        f.a = m.vertices[e.v[0]].position;
+        f.normal = e.normal;
+        f.e1 = m.vertices[e.v[1]].position - f.a;
+        f.e2 = m.vertices[e.v[2]].position - f.a;
+        f.d11 = glm::dot(f.e1, f.e1);
+        f.d12 = glm::dot(f.e1, f.e2);
+        f.d22 = glm::dot(f.e2, f.e2);
+        const double det = f.d11 * f.d22 - f.d12 * f.d12;
+        f.inv_det = det > 0 ? 1 / det : 0;  // 0: degenerate, never contains a point
+        m.frames.push_back(f);
+    }
     m.cell_items.resize(count[cells]);
     m.cell_slots.resize(count[cells]);
     m.grid_bounds = all;
@@ -216,10 +230,6 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
                      const scene::Object* object, glm::dvec3& bary) const {
     const Bvh* tree = &bvh;
     const std::vector<uint32_t>* ids = nullptr;  // null: positions index `elements`
-    // Nearest element from the grid (within half a patch: curved surfaces lie up to a facet's
-    // sagitta off their elements); taken at once when within `slack` of its plane.
-    long near = -1;
-    glm::dvec3 near_bary;
     if (object) {
         const auto slot = object_slot.find(object);
         if (slot == object_slot.end()) return -1;  // not meshed: the common miss, kept cheap
@@ -231,12 +241,12 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
             if (glm::any(glm::lessThan(p, grid_bounds.lo - reach)) ||
                 glm::any(glm::greaterThan(p, grid_bounds.hi + reach)))
                 return -1;  // e.g. a plane's hit beyond its meshed part
-            double h = 0;
-            near = find_near(p, slot->second, 0.5 * patch_size, near_bary, h);
-            if (near >= 0 && h <= slack) {
-                bary = near_bary;
-                return near;
-            }
+            // The nearest element within half a patch (a curved surface lies up to a facet's
+            // sagitta off its elements). Where it finds one, the ray's crossings of the
+            // facets would miss the slack too; only a grid cell's edge can hide the right
+            // element from it, so the tree below looks only when it finds none.
+            const long near = find_near(p, slot->second, 0.5 * patch_size, bary);
+            if (near >= 0) return near;
         }
     }
     long best = -1;
@@ -269,31 +279,24 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
         const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
         bary = {1 - uc - wc, uc, wc};
     });
-    if (best < 0 && near >= 0) {  // curved surfaces: the nearest facet
-        bary = near_bary;
-        best = near;
-    }
     return best;
 }
 
-long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary,
-                          double& height) const {
+long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack,
+                          glm::dvec3& bary) const {
     long best = -1;
     double best_h = slack;
     const size_t c = cell_index(*this, cell_of(*this, p));
     for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
         if (cell_slots[k] != slot) continue;
-        const MeshElement& e = elements[cell_items[k]];
-        const glm::dvec3 a = vertices[e.v[0]].position;
-        const double h = std::fabs(glm::dot(p - a, e.normal));
-        if (h > best_h) continue;
-        const glm::dvec3 r = p - a - glm::dot(p - a, e.normal) * e.normal;
-        const glm::dvec3 e1 = vertices[e.v[1]].position - a, e2 = vertices[e.v[2]].position - a;
-        const double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2);
-        const double r1 = glm::dot(r, e1), r2 = glm::dot(r, e2);
-        const double det = d11 * d22 - d12 * d12;
-        if (!(det > 0)) continue;
-        const double u = (d22 * r1 - d12 * r2) / det, w = (d11 * r2 - d12 * r1) / det;
+        const Frame& f = frames[cell_items[k]];
+        const glm::dvec3 ap = p - f.a;
+        const double along = glm::dot(ap, f.normal), h = std::fabs(along);
+        if (h > best_h || f.inv_det == 0) continue;
+        const glm::dvec3 r = ap - along * f.normal;
+        const double r1 = glm::dot(r, f.e1), r2 = glm::dot(r, f.e2);
+        const double u = (f.d22 * r1 - f.d12 * r2) * f.inv_det,
+                     w = (f.d11 * r2 - f.d12 * r1) * f.inv_det;
         constexpr double eps = 1e-6;
         if (u < -eps || w < -eps || u + w > 1 + eps) continue;
         const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
@@ -302,7 +305,6 @@ long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack, glm:
         best_h = h;
         if (h == 0) break;
     }
-    height = best_h;
     return best;
 }
 

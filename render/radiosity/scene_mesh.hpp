@@ -67,6 +67,14 @@ struct SceneMesh {
     glm::ivec3 grid_size{0};
     std::vector<uint32_t> cell_start, cell_items;
     std::vector<uint32_t> cell_slots;  // the object slot of each cell item (no element load to skip it)
+    // Per element, what projecting a point onto it needs, in one place (its vertices lie
+    // elsewhere in memory): corner a, unit normal, edges e1 = b - a and e2 = c - a with their
+    // Gram matrix and its inverse determinant.
+    struct Frame {
+        glm::dvec3 a, normal, e1, e2;
+        double d11, d12, d22, inv_det;
+    };
+    std::vector<Frame> frames;
     Aabb grid_bounds;                  // of every element: hits farther out find none
     double patch_size = 0;        // largest element edge used
     Aabb bounds;                  // of the finite objects
@@ -80,10 +88,8 @@ struct SceneMesh {
               const scene::Object* object, glm::dvec3& bary) const;
 
     // The element of the object in `slot` nearest to surface point p (within `slack` of its
-    // plane) whose projection contains p, from the grid cell of p; -1 when none. `height`
-    // receives its distance from that plane.
-    long find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary,
-                   double& height) const;
+    // plane) whose projection contains p, from the grid cell of p; -1 when none.
+    long find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary) const;
 };
 
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).
