@@ -54,7 +54,8 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
     if (!scene.globals.radiosity) return nullptr;
     options_ = options;
     mesh_ = std::make_unique<rad::SceneMesh>(
-        rad::build_scene_mesh(geometry, options.patch_size, rad::ambient_emission(scene)));
+        rad::build_scene_mesh(geometry, options.patch_size, rad::ambient_emission(scene),
+                              &scene.camera.location));
     for (const std::string& w : mesh_->warnings) log.push_back(w);
 
     const uint64_t key = rad::solution_key(frame, *mesh_, options);

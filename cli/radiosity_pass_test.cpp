@@ -42,7 +42,8 @@ render::radiosity::RadiosityOptions small() {
 // The reuse key of a scene's solution under `o`, as the pass computes it.
 uint64_t key_of(const scene::Scene& s, const render::radiosity::RadiosityOptions& o = small()) {
     const render::RenderFrame frame(s);
-    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), o.patch_size);
+    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), o.patch_size, {},
+                                                          &s.camera.location);
     return render::radiosity::solution_key(frame, mesh, o);
 }
 
@@ -154,6 +155,50 @@ TEST(RadiosityPass, MeshesTheCompiledObjects) {
                        "pigment { rgb 1 } } } }\n")
                   .size(),
               bare);
+}
+
+// The sides of vertices that face into their own opaque solid, seen from outside it, are
+// sealed (no form factors, no gather): only those.
+TEST(RadiosityPass, SealsOnlyTheSidesInsideOpaqueSolids) {
+    SourceManager sources;
+    const std::string glass = "box { <1, 0.5, 1>, <1.5, 1, 1.5> pigment { rgbf 0.5 } }\n";
+    const scene::Scene s = parse(sources, room(-5) + glass);
+    const render::RenderFrame frame(s);
+    auto top_of_floor = [](const render::radiosity::MeshVertex& v) {
+        return std::fabs(v.position.y) < 1e-9 && std::fabs(v.position.x) < 0.9 &&
+               std::fabs(v.position.z) < 0.9 && std::fabs(std::fabs(v.normal.y) - 1) < 1e-9;
+    };
+    const glm::dvec3 outside(0, 1, -5), in_floor(0, -0.05, 0);
+    const auto seen = render::radiosity::build_scene_mesh(frame.geometry(), 0.5, {}, &outside);
+    int floor_tops = 0;
+    for (const auto& v : seen.vertices) {
+        if (top_of_floor(v)) {
+            ++floor_tops;
+            ASSERT_TRUE(v.sealed == 1 || v.sealed == 2);
+            const int open = v.sealed == 1 ? 1 : 0;  // the side left open faces up
+            EXPECT_GT(open ? -v.normal.y : v.normal.y, 0.5);
+        }
+        const bool in_glass = v.position.x > 1 - 1e-9 && v.position.x < 1.5 + 1e-9 &&
+                              v.position.y > 0.5 - 1e-9 && v.position.y < 1 + 1e-9 &&
+                              v.position.z > 1 - 1e-9 && v.position.z < 1.5 + 1e-9;
+        if (in_glass) {
+            EXPECT_EQ(v.sealed, 0) << "light passes the glass box";
+        }
+    }
+    EXPECT_GT(floor_tops, 4);
+    // From inside the floor slab its inside is what shows.
+    const auto inside = render::radiosity::build_scene_mesh(frame.geometry(), 0.5, {}, &in_floor);
+    for (const auto& v : inside.vertices)
+        if (top_of_floor(v)) {
+            EXPECT_EQ(v.sealed, 0);
+        }
+    // Without an eye nothing is sealed.
+    for (const auto& v : render::radiosity::build_scene_mesh(frame.geometry(), 0.5).vertices)
+        EXPECT_EQ(v.sealed, 0);
+    // The reuse key follows the sealing: the camera moving into the slab is a new solution.
+    const auto o = small();
+    EXPECT_NE(render::radiosity::solution_key(frame, seen, o),
+              render::radiosity::solution_key(frame, inside, o));
 }
 
 TEST(RadiosityPass, CeilingGetsOnlyIndirectLightAndNoNaN) {

@@ -147,6 +147,7 @@ struct Geometry::Impl {
     Bvh bvh;
     size_t primitives = 0;
     std::vector<PlacedObject> placed;  // the roots in scene order
+    std::vector<uint32_t> placed_nodes;  // their nodes
     bool listable[kQueries] = {};  // every root seen is a direct kind: visit_shadow_hits works
     bool mostly_passes_light[kQueries] = {};
     // Boxes of the clear roots that shadow rays see, grown by twice the shadow tolerance, in
@@ -228,6 +229,7 @@ Geometry::Geometry(const std::vector<scene::ObjectPtr>& objects) : impl_(std::ma
         const Node& n = store.nodes[roots[i]];
         impl_->placed.push_back({n.object, to_world[i], n.texture, n.kind != NodeKind::Shape,
                                  n.no_radiosity, n.clip_count > 0});
+        impl_->placed_nodes.push_back(roots[i]);
     }
     std::vector<Aabb> boxes;
     std::vector<uint32_t> finite;
@@ -256,6 +258,16 @@ Geometry::~Geometry() = default;
 size_t Geometry::primitive_count() const { return impl_->primitives; }
 
 const std::vector<PlacedObject>& Geometry::placed_objects() const { return impl_->placed; }
+
+bool Geometry::inside_placed(size_t i, const glm::dvec3& p) const {
+    return inside_node(impl_->store, impl_->placed_nodes[i], p);
+}
+
+bool Geometry::placed_is_opaque(size_t i) const {
+    const Node& n = impl_->store.nodes[impl_->placed_nodes[i]];
+    return !n.no_image && !n.no_reflection && !may_pass_light(n.texture) &&
+           !may_pass_light(n.interior_texture);
+}
 
 bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Query query) const {
     const NodeStore& store = impl_->store;

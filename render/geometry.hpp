@@ -57,6 +57,12 @@ public:
 
     size_t primitive_count() const;
     const std::vector<PlacedObject>& placed_objects() const;
+    // Whether world point p is inside placed_objects()[i].
+    bool inside_placed(size_t i, const glm::dvec3& p) const;
+    // Whether no ray can see into placed_objects()[i] from outside it: no layer of its texture
+    // lets light through, and camera and reflection rays do not pass it by (no_image,
+    // no_reflection).
+    bool placed_is_opaque(size_t i) const;
 
 private:
     struct Impl;

@@ -170,7 +170,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
     std::vector<uint32_t> todo;
     std::vector<uint8_t> done(mesh.vertices.size(), 0);  // bit s: side s gathered
     for (uint32_t u = 0; u < mesh.unknowns(); ++u)
-        if (wanted[u] && needs_light(mesh.vertices[u / 2])) {
+        if (wanted[u] && needs_light(mesh.vertices[u / 2]) && !(mesh.vertices[u / 2].sealed >> (u % 2) & 1)) {
             todo.push_back(u);
             done[u / 2] |= uint8_t(1u << (u % 2));
         }

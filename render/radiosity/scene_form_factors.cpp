@@ -145,6 +145,7 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
             if (!needs_light(mv)) continue;  // ρ = 0: G is never used
             const glm::dvec3 origin = gather_origin(mesh, mv);
             for (size_t u = 2 * v; u < 2 * v + 2; ++u) {
+                if (mv.sealed >> (u % 2) & 1) continue;  // nothing sees this side
                 entries.clear();
                 const glm::dvec3 normal = side_normal(mv, u % 2);
                 auto on_hit = [&](long e, uint32_t col, double w, double) {

@@ -147,6 +147,30 @@ void build_grid(SceneMesh& m) {
     }
 }
 
+// Marks the vertex sides that face into their own opaque solid object with the eye outside
+// it (the inner side of a box or sphere): no camera, reflection or gather ray reaches them,
+// so they get no form factors and no gather.
+void seal_sides(SceneMesh& mesh, const Geometry& geometry,
+                const std::vector<const PlacedObject*>& pieces,
+                const std::vector<size_t>& first_element, const glm::dvec3& eye) {
+    const PlacedObject* placed = geometry.placed_objects().data();
+    const double step = 1e-3 * mesh.patch_size;  // as gathers leave the surface
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const size_t i = size_t(pieces[k] - placed);
+        if (!geometry.placed_is_opaque(i) || geometry.inside_placed(i, eye)) continue;
+        for (size_t e = first_element[k]; e < first_element[k + 1]; ++e)
+            for (uint32_t v : mesh.elements[e].v) {
+                MeshVertex& mv = mesh.vertices[v];
+                for (uint32_t side = 0; side < 2; ++side) {
+                    const glm::dvec3 n = side ? -mv.normal : mv.normal;
+                    if (!(mv.sealed >> side & 1) &&
+                        geometry.inside_placed(i, mv.position + step * (mv.inward + n)))
+                        mv.sealed |= uint8_t(1u << side);
+                }
+            }
+    }
+}
+
 }  // namespace
 
 double default_patch_size(const Aabb& bounds) {
@@ -156,7 +180,7 @@ double default_patch_size(const Aabb& bounds) {
 }
 
 SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
-                           const glm::dvec3& ambient_emission) {
+                           const glm::dvec3& ambient_emission, const glm::dvec3* eye) {
     SceneMesh mesh;
     const std::vector<const PlacedObject*> pieces = meshed_objects(geometry, mesh.warnings);
 
@@ -180,11 +204,14 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
     opt.max_edge = mesh.patch_size;
 
     Welder welder(mesh, mesh.patch_size * 1e-6, ambient_emission);
+    std::vector<size_t> first_element;  // per piece
     for (const PlacedObject* piece : pieces) {
         throw_if_stop_requested();  // SIGINT/SIGTERM: a big scene meshes for a while
+        first_element.push_back(mesh.elements.size());
         for (const Patch& p : mesh_object(*piece->object, piece->to_world, opt, {}))
             add_patch(mesh, welder, p, *piece);
     }
+    first_element.push_back(mesh.elements.size());
 
     // Vertex areas and the direction into the adjacent elements (gathers start a hair inside
     // them, off shared edges and corners).
@@ -201,6 +228,8 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
         const double len = glm::length(v.inward);
         v.inward = len > 0 ? v.inward / len : glm::dvec3(0);
     }
+
+    if (eye) seal_sides(mesh, geometry, pieces, first_element, *eye);
 
     mesh.boxes.reserve(mesh.elements.size());
     for (const MeshElement& e : mesh.elements) {

@@ -26,6 +26,7 @@ struct MeshVertex {
     glm::dvec3 emission{0};      // emission × pigment
     double brilliance = 1;       // the finish's: direct light goes with cos^brilliance
     double area = 0;             // a third of the adjacent elements' area
+    uint8_t sealed = 0;          // bit s: side s faces into an opaque solid (build_scene_mesh)
 };
 
 struct MeshElement {
@@ -101,7 +102,10 @@ double default_patch_size(const Aabb& bounds);
 // and pure emitters (diffuse 0 everywhere: a sky sphere's exact colour comes from its
 // texture at each ray's hit, and its size does not set the patch size). `ambient_emission`:
 // surface_light.hpp.
+// With an `eye` (the camera), the vertex sides facing into their own opaque solid object,
+// when the eye is outside it, are sealed: nothing can see them, so they get no light.
 SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
-                           const glm::dvec3& ambient_emission = glm::dvec3(0));
+                           const glm::dvec3& ambient_emission = glm::dvec3(0),
+                           const glm::dvec3* eye = nullptr);
 
 }  // namespace lumen::render::radiosity

@@ -37,7 +37,7 @@ uint64_t solution_key(const RenderFrame& frame, const SceneMesh& mesh,
     h.add(mesh.patch_size);
     for (const MeshVertex& v : mesh.vertices) {
         h.add(v.position), h.add(v.normal), h.add(v.rho), h.add(v.emission);
-        h.add(v.brilliance), h.add(v.area);
+        h.add(v.brilliance), h.add(v.area), h.add(v.sealed);
     }
     for (const MeshElement& e : mesh.elements) h.add(e.v);
     // What lights them directly and what the sky adds.
