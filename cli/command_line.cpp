@@ -124,6 +124,7 @@ std::string usage_text() {
            "  Radiosity_Subdivide_Budget=K  split threshold (0.2), smallest edge (patch/8),\n"
            "                                new vertices at most K x gathered ones (2)\n"
            "  Radiosity_Min_Pixels=P        no split of elements under P pixels across (3)\n"
+           "  Radiosity_Max_Span=F          split elements seen wider than F x the image (1/8)\n"
            "  Radiosity_Tolerance=T         iterative/progressive stop\n"
            "  Radiosity_File_Name=F (+RF), Radiosity_From_File (+RFI), Radiosity_To_File (+RFO)\n"
            "                                load/save the patch solution\n";

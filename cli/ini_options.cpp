@@ -159,6 +159,12 @@ double to_positive(const Setting& s) {
     return v;
 }
 
+double to_nonnegative(const Setting& s) {
+    const double v = to_double(s);
+    if (!(v >= 0) || !std::isfinite(v)) bad_value(s, "a number from 0 up");
+    return v;
+}
+
 // A count for the evaluation limits: a whole number from 1 up.
 double to_count(const Setting& s) {
     const double v = to_double(s);
@@ -270,6 +276,8 @@ const IniKey kKeys[] = {
      [](Options& o, const Setting& s) { o.radiosity.subdivision.tolerance = to_positive(s); }},
     {"Radiosity_Subdivide_Budget",
      [](Options& o, const Setting& s) { o.radiosity.subdivision.budget = to_positive(s); }},
+    {"Radiosity_Max_Span",
+     [](Options& o, const Setting& s) { o.radiosity.subdivision.max_span = to_nonnegative(s); }},
     {"Radiosity_Min_Pixels",
      [](Options& o, const Setting& s) { o.radiosity.subdivision.min_pixels = to_positive(s); }},
     {"Radiosity_Min_Element",

@@ -98,6 +98,16 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
             subdivision.pixel_angle = std::acos(std::clamp(c, -1.0, 1.0));
             subdivision.pixel_offset = glm::length(r1->origin - r0->origin);
             subdivision.eye = r0->origin;
+            subdivision.image_width = render.width;
+            // The view cone, through the image's corners (a parallel camera has none).
+            const glm::dvec3 centre = glm::normalize(r0->dir);
+            double widest = 1;
+            for (double cx : {0.0, double(render.width)})
+                for (double cy : {0.0, double(render.height)})
+                    if (const auto rc = camera.ray(cx, cy))
+                        widest = std::min(widest, glm::dot(glm::normalize(rc->dir), centre));
+            subdivision.view_dir = centre;
+            subdivision.view_cos = widest > 0.9999 ? 1.0 : widest;
         }
         receivers_ = std::make_unique<rad::ReceiverMesh>(
             rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays,

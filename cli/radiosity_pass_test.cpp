@@ -226,6 +226,39 @@ TEST(RadiosityPass, CeilingGetsOnlyIndirectLightAndNoNaN) {
     EXPECT_LT(floor, ceiling);
 }
 
+// One far object makes the default patches huge: a floor element then fills the view, and
+// its corners, far outside the image, see nothing of a small emitter near the camera. The
+// preview splits what is seen wider than 1/8 of the image, so the floor beside the emitter
+// is lit (advanced/blocks/stackernight.pov's floor was black).
+TEST(RadiosityPass, ElementsSeenTooWideSplit) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+        "#version 3.7; global_settings { radiosity { count 100 recursion_limit 1 } }\n"
+        "camera { location <0, 3, -6> look_at <0, 0, 0> }\n"
+        "plane { y, 0 pigment { rgb 1 } finish { diffuse 1 } }\n"
+        "box { -0.5, 0.5 translate <0, 0.5, 0> pigment { rgb 1 } finish { emission 1 diffuse 0 } }\n"
+        "box { -0.3, 0.3 translate <-1.5, 0.3, 0> pigment { rgb 1 } }\n"
+        "box { -0.5, 0.5 translate <400, 0.5, 600> pigment { rgb 1 } }\n");
+    auto floor_beside_emitter = [&](double max_span) {
+        RadiosityPass pass;
+        std::vector<std::string> log;
+        auto o = small();
+        o.patch_size = 0;  // the default, from the bounds
+        o.subdivision.max_span = max_span;
+        const render::IndirectLight* light = pass.prepare(s, o, view(), log);
+        EXPECT_NE(light, nullptr);
+        if (!light) return 0.0;
+        render::Geometry geometry(s);
+        render::ThreadState state;
+        render::Hit hit;
+        EXPECT_TRUE(geometry.intersect(render::Ray{{0.9, 1, -0.2}, {0, -1, 0}}, 1e-4, 1e9, hit));
+        return light->incident(hit, {0, 1, 0}, state).x;
+    };
+    // An emitter filling about a quarter of the hemisphere above: G about 0.25.
+    EXPECT_GT(floor_beside_emitter(1.0 / 8), 0.1);
+    EXPECT_LT(floor_beside_emitter(0), 0.02) << "the huge element's corners see no light";
+}
+
 TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     SourceManager sources;
     RadiosityPass pass;

@@ -24,6 +24,15 @@ struct SubdivisionOptions {
     // lies: smaller elements no longer change the image. The footprint of one pixel at p is
     // pixel_offset + pixel_angle × |p - eye| (set from the camera; pixel_angle 0: no limit).
     double min_pixels = 3;
+    // A receiving element seen wider than `max_span` × the image width splits whatever its
+    // corners say: gathers every few pixels of the image are what let the corners see light
+    // that falls between them (one patch of a scene spread far can fill the view). 0: off.
+    double max_span = 1.0 / 8;
+    double image_width = 0;  // pixels, set from the render
+    // The view: a child of a split element is seen when a corner, its centre or its point
+    // nearest the eye lies within acos(view_cos) of view_dir (1: no test).
+    glm::dvec3 view_dir{0, 0, 1};
+    double view_cos = 1;
     double pixel_angle = 0, pixel_offset = 0;
     glm::dvec3 eye{0};
 };

@@ -127,6 +127,30 @@ std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triang
 
 namespace {
 
+// The point of triangle abc nearest to p (Ericson, Real-Time Collision Detection, 5.1.5).
+glm::dvec3 nearest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                               const glm::dvec3& c) {
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const glm::dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+    const glm::dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    const double denom = va + vb + vc;
+    if (!(denom > 0)) return a;  // degenerate
+    return a + ab * (vb / denom) + ac * (vc / denom);
+}
+
 // How far a triangle's corners disagree, in units of the split threshold (> 1: split).
 double disagreement(const ReceiverMesh::Triangle& t, const std::vector<glm::dvec3>& S,
                     double tolerance, double floor) {
@@ -179,6 +203,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
         for (uint32_t v : t.v) t.sides |= done[v];
 
     const size_t budget = size_t(std::max(0.0, options.budget) * double(todo.size()));
+    size_t widened = 0;  // vertices added by splits of elements seen too wide: not budgeted
     const double min_edge = options.min_element > 0 ? options.min_element : mesh.patch_size / 8;
     for (int level = 0; options.enabled && level < 16; ++level) {
         // Decide on smoothed values: the raw ones carry the per-vertex ray noise.
@@ -194,6 +219,29 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
             for (int k = 0; k < 3; ++k)
                 longest = std::max(longest, glm::length(r.position(t.v[k]) -
                                                         r.position(t.v[(k + 1) % 3])));
+            if (options.pixel_angle > 0 && options.max_span > 0 && options.image_width > 0) {
+                // Seen too wide: split before anything else, outside the budget (the image
+                // bounds how many such splits there can be).
+                const glm::dvec3 a = r.position(t.v[0]), b = r.position(t.v[1]),
+                                 c = r.position(t.v[2]);
+                const glm::dvec3 near = nearest_on_triangle(options.eye, a, b, c);
+                const double pixel = options.pixel_offset +
+                                     options.pixel_angle * glm::length(near - options.eye);
+                auto in_view = [&](const glm::dvec3& p) {
+                    const glm::dvec3 d = p - options.eye;
+                    const double len = glm::length(d);
+                    return len > 0 && glm::dot(d, options.view_dir) >= options.view_cos * len;
+                };
+                // The seen elements themselves, and those of their pieces still in view (the
+                // rest of a large element may reach far outside the image).
+                const bool seen = t.depth == 0 || options.view_cos >= 1 || in_view(near) ||
+                                  in_view(a) || in_view(b) || in_view(c) ||
+                                  in_view((a + b + c) / 3.0);
+                if (seen && longest > options.max_span * options.image_width * pixel) {
+                    marks.emplace_back(INFINITY, i);
+                    continue;
+                }
+            }
             if (longest / 2 < min_edge) continue;
             if (options.pixel_angle > 0) {
                 const glm::dvec3 centre =
@@ -210,11 +258,13 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
         std::vector<ReceiverMesh::Triangle> children;
         std::vector<uint32_t> fresh;
         for (const auto& [d, i] : marks) {
-            if (r.added_vertices() + 3 > budget) break;
+            if (d != INFINITY && r.added_vertices() - widened + 3 > budget) break;
             const ReceiverMesh::Triangle t = r.leaves[i];
             const auto [a, b, c] = t.v;
+            const size_t before = r.added_vertices();
             const uint32_t ab = r.midpoint(a, b, c), bc = r.midpoint(b, c, a),
                            ca = r.midpoint(c, a, b);
+            if (d == INFINITY) widened += r.added_vertices() - before;
             done.resize(r.vertex_count(), 0);
             for (uint32_t m : {ab, bc, ca})
                 for (uint32_t side = 0; side < 2; ++side)
