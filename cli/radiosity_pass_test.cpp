@@ -10,6 +10,7 @@
 #include "base/diagnostics.hpp"
 #include "render/frame.hpp"
 #include "render/radiosity/scene_mesh.hpp"
+#include "render/radiosity/scene_solution.hpp"
 #include "render/radiosity/solution_io.hpp"
 #include "render/radiosity/solution_key.hpp"
 
@@ -257,6 +258,43 @@ TEST(RadiosityPass, ElementsSeenTooWideSplit) {
     // An emitter filling about a quarter of the hemisphere above: G about 0.25.
     EXPECT_GT(floor_beside_emitter(1.0 / 8), 0.1);
     EXPECT_LT(floor_beside_emitter(0), 0.02) << "the huge element's corners see no light";
+}
+
+// A gather starts on the true surface under its vertex. Where a scene places copies of an
+// object on top of each other the tracer answers with either copy, and a vertex of the other
+// copy still finds its surface (patio-radio_36.pov's balcony rails gathered from inside their
+// cylinders, under their chords, and showed black).
+TEST(RadiosityPass, GathersFindTheSurfaceOfCoincidentCopies) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+        "#version 3.7; global_settings { radiosity { } }\n"
+        "camera { location <0, 3, -6> look_at <0, 0, 0> }\n"
+        "#declare C = union { cylinder { <0, 0, -5>, <0, 0, 5>, 1 pigment { rgb 1 } } }\n"
+        "object { C } object { C rotate 180 * z }\n");
+    const render::RenderFrame frame(s);
+    const auto& placed = frame.geometry().placed_objects();
+    ASSERT_EQ(placed.size(), 2u);
+    ASSERT_NE(placed[0].object, placed[1].object);
+    // A chord's point below the top of the cylinder, as a coarse facet's vertex would be.
+    render::Hit hit;
+    ASSERT_TRUE(frame.geometry().intersect(render::Ray{{0, 5, 0}, {0, -1, 0}}, 1e-4, 1e9, hit));
+    const scene::Object* other = hit.object == placed[0].object ? placed[1].object : placed[0].object;
+    glm::dvec3 p(0, 0.9, 0), n(0, 1, 0);
+    EXPECT_TRUE(render::radiosity::onto_surface(frame.geometry(), other, p, n, 0.5));
+    EXPECT_NEAR(p.y, 1.0, 1e-9);
+    // Another object is still not taken for the vertex's own.
+    const scene::Scene two = parse(sources,
+        "#version 3.7; global_settings { radiosity { } }\n"
+        "camera { location <0, 3, -6> look_at <0, 0, 0> }\n"
+        "cylinder { <0, 0, -5>, <0, 0, 5>, 1 pigment { rgb 1 } }\n"
+        "cylinder { <0, 0, -5>, <0, 0, 5>, 1 pigment { rgb 1 } }\n");
+    const render::RenderFrame frame2(two);
+    const auto& placed2 = frame2.geometry().placed_objects();
+    ASSERT_TRUE(frame2.geometry().intersect(render::Ray{{0, 5, 0}, {0, -1, 0}}, 1e-4, 1e9, hit));
+    const scene::Object* loser = hit.object == placed2[0].object ? placed2[1].object : placed2[0].object;
+    glm::dvec3 q(0, 0.9, 0), m(0, 1, 0);
+    EXPECT_FALSE(render::radiosity::onto_surface(frame2.geometry(), loser, q, m, 0.5))
+        << "two declarations on one line are two objects";
 }
 
 TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {

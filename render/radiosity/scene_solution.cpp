@@ -88,6 +88,18 @@ int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options
     return one_bounce ? 4 : 16;
 }
 
+namespace {
+
+// The same object, or a copy of its declaration: scenes place copies on top of each other
+// (radiosity/patio-radio_36.pov's four balconies of each side, one per rotated copy of its
+// Group1), and the tracer answers with whichever copy comes first.
+bool same_object(const scene::Object* a, const scene::Object* b) {
+    return a == b || (a && b && a->loc.file == b->loc.file && a->loc.line == b->loc.line &&
+                      a->loc.column == b->loc.column && a->loc.line != 0);
+}
+
+}  // namespace
+
 bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
                   glm::dvec3& n, double reach) {
     const Ray probe{p + n * reach, -n};
@@ -96,7 +108,7 @@ bool onto_surface(const Intersector& geometry, const scene::Object* object, glm:
         Hit hit;
         if (!geometry.intersect(probe, t_min, 2 * reach, hit, Query::All)) return false;
         const double c = glm::dot(hit.normal, n);
-        if (hit.object == object && std::fabs(c) > 0.5 && std::isfinite(c)) {
+        if (same_object(hit.object, object) && std::fabs(c) > 0.5 && std::isfinite(c)) {
             p = hit.point;
             n = c > 0 ? hit.normal : -hit.normal;
             return true;
