@@ -90,12 +90,12 @@ int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options
 
 namespace {
 
-// The same object, or a copy of its declaration: scenes place copies on top of each other
+// A copy of the same declaration: scenes place copies on top of each other
 // (radiosity/patio-radio_36.pov's four balconies of each side, one per rotated copy of its
 // Group1), and the tracer answers with whichever copy comes first.
-bool same_object(const scene::Object* a, const scene::Object* b) {
-    return a == b || (a && b && a->loc.file == b->loc.file && a->loc.line == b->loc.line &&
-                      a->loc.column == b->loc.column && a->loc.line != 0);
+bool same_declaration(const scene::Object* a, const scene::Object* b) {
+    return a && b && a->loc.file == b->loc.file && a->loc.line == b->loc.line &&
+           a->loc.column == b->loc.column && a->loc.line != 0;
 }
 
 }  // namespace
@@ -108,7 +108,10 @@ bool onto_surface(const Intersector& geometry, const scene::Object* object, glm:
         Hit hit;
         if (!geometry.intersect(probe, t_min, 2 * reach, hit, Query::All)) return false;
         const double c = glm::dot(hit.normal, n);
-        if (same_object(hit.object, object) && std::fabs(c) > 0.5 && std::isfinite(c)) {
+        // A copy must face the same way: a neighbour made by the same loop or macro that
+        // touches the object face to face faces the other way.
+        const bool own = hit.object == object || (same_declaration(hit.object, object) && c > 0.5);
+        if (own && std::fabs(c) > 0.5 && std::isfinite(c)) {
             p = hit.point;
             n = c > 0 ? hit.normal : -hit.normal;
             return true;
