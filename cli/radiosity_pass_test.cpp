@@ -294,6 +294,36 @@ TEST(RadiosityPass, GathersFindTheSurfaceOfCoincidentCopies) {
         << "two declarations are two objects";
 }
 
+// A gather that starts inside solid matter (under a box standing on the floor) is told
+// apart: its rays meet the box from behind. With the eye inside the box they are ordinary.
+TEST(RadiosityPass, GathersKnowWhenTheyStartInsideSolidMatter) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+        "#version 3.7; global_settings { radiosity { } }\n"
+        "camera { location <0, 3, -6> look_at <0, 0, 0> }\n"
+        "plane { y, 0 pigment { rgb 1 } }\n"
+        "box { <-1, 0, -1>, <1, 1, 1> pigment { rgb 1 } }\n");
+    const render::RenderFrame frame(s);
+    const glm::dvec3 eye(0, 3, -6), in_box(0, 0.5, 0);
+    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), 0.5, {}, &eye);
+    const std::vector<glm::dvec3> B(mesh.unknowns(), glm::dvec3(0.5));
+    auto gather = [&](const render::radiosity::SceneMesh& m, const glm::dvec3& at) {
+        return render::radiosity::gather_point(s, m, frame.geometry(), B, at, {0, 1, 0}, 64, 7);
+    };
+    const auto under = gather(mesh, {0, 1e-4, 0});
+    EXPECT_GT(under.inside, 0.99);
+    const auto edge = gather(mesh, {1 + 1e-4, 1e-4, 0});  // on the floor beside the box
+    EXPECT_LT(edge.inside, 0.01) << "a point outside the box, beside it, is not inside";
+    const auto open = gather(mesh, {5, 1e-4, 5});
+    EXPECT_EQ(open.inside, 0.0);
+    // The camera inside the box: its inside is space one can see.
+    const auto seen = render::radiosity::build_scene_mesh(frame.geometry(), 0.5, {}, &in_box);
+    EXPECT_EQ(gather(seen, {0, 1e-4, 0}).inside, 0.0);
+    // Without an eye nothing is solid.
+    const auto plain = render::radiosity::build_scene_mesh(frame.geometry(), 0.5);
+    EXPECT_EQ(gather(plain, {0, 1e-4, 0}).inside, 0.0);
+}
+
 TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     SourceManager sources;
     RadiosityPass pass;

@@ -259,6 +259,42 @@ size_t Geometry::primitive_count() const { return impl_->primitives; }
 
 const std::vector<PlacedObject>& Geometry::placed_objects() const { return impl_->placed; }
 
+namespace {
+
+bool closed_shape(const scene::Object& o) {
+    const scene::Shape& s = o.shape;
+    if (const auto* c = std::get_if<scene::Cylinder>(&s)) return !c->open;
+    if (const auto* c = std::get_if<scene::Cone>(&s)) return !c->open;
+    return std::holds_alternative<scene::Box>(s) || std::holds_alternative<scene::Sphere>(s) ||
+           std::holds_alternative<scene::Torus>(s) || std::holds_alternative<scene::Plane>(s) ||
+           std::holds_alternative<scene::Superellipsoid>(s) ||
+           std::holds_alternative<scene::Ovus>(s);
+}
+
+// Appends the primitives under node `index`; false when one has no inside.
+bool closed_leaves(const NodeStore& store, uint32_t index, std::vector<const scene::Object*>& out) {
+    const Node& n = store.nodes[index];
+    if (n.kind == NodeKind::Shape) {
+        out.push_back(n.object);
+        return n.object && closed_shape(*n.object);
+    }
+    for (uint32_t i = 0; i < n.child_count; ++i)
+        if (!closed_leaves(store, store.links[n.children + i], out)) return false;
+    return true;
+}
+
+}  // namespace
+
+std::vector<const scene::Object*> Geometry::solid_primitives(const glm::dvec3& eye) const {
+    std::vector<const scene::Object*> out;
+    for (size_t i = 0; i < impl_->placed.size(); ++i) {
+        if (!placed_is_opaque(i) || inside_placed(i, eye)) continue;
+        const size_t mark = out.size();
+        if (!closed_leaves(impl_->store, impl_->placed_nodes[i], out)) out.resize(mark);
+    }
+    return out;
+}
+
 bool Geometry::inside_placed(size_t i, const glm::dvec3& p) const {
     return inside_node(impl_->store, impl_->placed_nodes[i], p);
 }

@@ -57,6 +57,10 @@ public:
 
     size_t primitive_count() const;
     const std::vector<PlacedObject>& placed_objects() const;
+    // The primitives of every opaque closed object that `eye` is outside of (shapes with an
+    // inside, and CSG made only of such): a ray that meets one of their surfaces from behind
+    // started inside solid matter, where nothing can see.
+    std::vector<const scene::Object*> solid_primitives(const glm::dvec3& eye) const;
     // Whether world point p is inside placed_objects()[i].
     bool inside_placed(size_t i, const glm::dvec3& p) const;
     // Whether no ray can see into placed_objects()[i] from outside it: no layer of its texture

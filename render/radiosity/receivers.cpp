@@ -108,6 +108,33 @@ glm::dvec3 ReceiverMesh::value(long element, const glm::dvec3& bary, uint32_t si
     return b.x * g[0] + b.y * g[1] + b.z * g[2];
 }
 
+void fill_buried(const std::vector<ReceiverMesh::Triangle>& leaves, std::vector<glm::dvec3>& G,
+                 std::vector<char>& buried) {
+    if (std::find(buried.begin(), buried.end(), 1) == buried.end()) return;
+    for (int ring = 0; ring < 3; ++ring) {
+        std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
+        std::vector<int> count(G.size(), 0);
+        for (const ReceiverMesh::Triangle& t : leaves)
+            for (uint32_t side = 0; side < 2; ++side)
+                for (int a = 0; a < 3; ++a) {
+                    const size_t u = 2 * size_t(t.v[a]) + side;
+                    if (!buried[u]) continue;
+                    for (int b = 0; b < 3; ++b) {
+                        const size_t w = 2 * size_t(t.v[b]) + side;
+                        if (b != a && !buried[w]) sum[u] += G[w], ++count[u];
+                    }
+                }
+        bool changed = false;
+        for (size_t u = 0; u < G.size(); ++u)
+            if (buried[u] && count[u] > 0) {
+                G[u] = sum[u] / double(count[u]);
+                buried[u] = 0;
+                changed = true;
+            }
+        if (!changed) return;
+    }
+}
+
 std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,
                                const std::vector<glm::dvec3>& G) {
     std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
@@ -151,6 +178,10 @@ glm::dvec3 nearest_on_triangle(const glm::dvec3& p, const glm::dvec3& a, const g
     return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
+// A vertex side whose gather started this much inside solid matter is buried: what it
+// gathered is not the light outside.
+constexpr double kBuried = 0.9;
+
 // How far a triangle's corners disagree, in units of the split threshold (> 1: split).
 double disagreement(const ReceiverMesh::Triangle& t, const std::vector<glm::dvec3>& S,
                     double tolerance, double floor) {
@@ -176,7 +207,9 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const SubdivisionOptions& options, const UnmeshedSurfaces* unmeshed) {
     ReceiverMesh r(mesh);
     r.G = fallback;
+    std::vector<char> buried(r.G.size(), 0);
     auto gather = [&](const std::vector<uint32_t>& unknowns) {
+        buried.resize(r.G.size(), 0);
         parallel_for(unknowns.size(), threads, [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
                 const uint32_t u = unknowns[i], v = u / 2;
@@ -186,8 +219,10 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                 glm::dvec3 origin = r.origin(v), n = r.normal(v);
                 onto_surface(geometry, r.object(v), origin, n, r.reach(v));
                 if (u % 2) n = -n;
-                r.G[u] = gather_point(scene, mesh, geometry, B, origin, n, rays, side_seed(u),
-                                      unmeshed).G;
+                const GatherResult g = gather_point(scene, mesh, geometry, B, origin, n, rays,
+                                                    side_seed(u), unmeshed);
+                r.G[u] = g.G;
+                buried[u] = g.inside >= kBuried;
             }
         });
     };
@@ -199,6 +234,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
             done[u / 2] |= uint8_t(1u << (u % 2));
         }
     gather(todo);
+    fill_buried(r.leaves, r.G, buried);
     for (ReceiverMesh::Triangle& t : r.leaves)
         for (uint32_t v : t.v) t.sides |= done[v];
 
@@ -288,6 +324,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
         next.insert(next.end(), children.begin(), children.end());
         r.leaves = std::move(next);
         gather(fresh);
+        fill_buried(r.leaves, r.G, buried);
     }
     r.G = smooth(r.leaves, r.G);
     return r;

@@ -73,6 +73,13 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const SubdivisionOptions& options,
                      const UnmeshedSurfaces* unmeshed = nullptr);
 
+// Buried vertex sides (gathers that started inside solid matter: a floor vertex under a box
+// standing on it, a ring sunk into a column) take the mean of their unburied neighbours on
+// the same side over the triangles sharing them, up to three rings deep; those with none
+// near keep what they gathered. Filled ones are no longer buried.
+void fill_buried(const std::vector<ReceiverMesh::Triangle>& triangles, std::vector<glm::dvec3>& G,
+                 std::vector<char>& buried);
+
 // One pass of neighbour averaging over the vertices sharing a triangle (same side).
 std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,
                                const std::vector<glm::dvec3>& G);

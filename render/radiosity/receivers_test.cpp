@@ -72,6 +72,37 @@ TEST(Receivers, TJunctionHasNoCrack) {
     EXPECT_NEAR(from_e1(r, 0.25).x, 3.0, 1e-12);
 }
 
+TEST(Receivers, BuriedVerticesTakeTheirNeighboursMean) {
+    // The square's two triangles share the diagonal (0, 2); vertex 2's front side is buried.
+    const std::vector<ReceiverMesh::Triangle> tris{{{0, 1, 2}, 1, 0}, {{0, 2, 3}, 1, 0}};
+    std::vector<glm::dvec3> G(8, glm::dvec3(0));
+    G[0] = glm::dvec3(1), G[2] = glm::dvec3(2), G[4] = glm::dvec3(-5), G[6] = glm::dvec3(4);
+    G[5] = glm::dvec3(7);  // vertex 2's back side, not buried
+    std::vector<char> buried(8, 0);
+    buried[4] = 1;
+    fill_buried(tris, G, buried);
+    // Neighbours per triangle: (0, 1) and (0, 3): (1 + 2 + 1 + 4) / 4.
+    EXPECT_NEAR(G[4].x, 2.0, 1e-12);
+    EXPECT_EQ(buried[4], 0);
+    EXPECT_NEAR(G[5].x, 7.0, 1e-12);  // sides are apart
+    EXPECT_NEAR(G[0].x, 1.0, 1e-12);  // the rest unchanged
+    // Two rings deep: vertex 3 buried too is filled from 0 and 2 once 2 is.
+    std::vector<glm::dvec3> H(8, glm::dvec3(0));
+    H[0] = glm::dvec3(1), H[2] = glm::dvec3(1);
+    std::vector<char> deep(8, 0);
+    deep[4] = deep[6] = 1;
+    fill_buried(tris, H, deep);
+    EXPECT_NEAR(H[4].x, 1.0, 1e-12);
+    EXPECT_NEAR(H[6].x, 1.0, 1e-12);
+    // Nothing unburied near: left as gathered.
+    std::vector<glm::dvec3> K(8, glm::dvec3(3));
+    std::vector<char> all(8, 0);
+    for (size_t u = 0; u < 8; u += 2) all[u] = 1;
+    fill_buried(tris, K, all);
+    EXPECT_NEAR(K[0].x, 3.0, 1e-12);
+    EXPECT_EQ(all[0], 1);
+}
+
 TEST(Receivers, SmoothingAveragesNeighboursPerSide) {
     const std::vector<ReceiverMesh::Triangle> tris{{{0, 1, 2}, 1, 0}};
     std::vector<glm::dvec3> G(6, glm::dvec3(0));

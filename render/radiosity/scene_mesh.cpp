@@ -229,7 +229,10 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
         v.inward = len > 0 ? v.inward / len : glm::dvec3(0);
     }
 
-    if (eye) seal_sides(mesh, geometry, pieces, first_element, *eye);
+    if (eye) {
+        seal_sides(mesh, geometry, pieces, first_element, *eye);
+        for (const scene::Object* o : geometry.solid_primitives(*eye)) mesh.solids.insert(o);
+    }
 
     mesh.boxes.reserve(mesh.elements.size());
     for (const MeshElement& e : mesh.elements) {

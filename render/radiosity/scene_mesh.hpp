@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -80,6 +81,9 @@ struct SceneMesh {
     double patch_size = 0;        // largest element edge used
     Aabb bounds;                  // of the finite objects
     std::vector<std::string> warnings;  // with source locations
+    // Geometry::solid_primitives of the eye (build_scene_mesh with an eye): gather rays that
+    // meet one from behind started inside solid matter.
+    std::unordered_set<const scene::Object*> solids;
 
     size_t unknowns() const { return vertices.size() * 2; }
 

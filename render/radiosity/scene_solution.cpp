@@ -205,7 +205,15 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                 strata.R.assign(size_t(cells) * cells, INFINITY);
             }
             at = size_t(i * cells + j);
+        },
+        [&](const glm::dvec3&, double w) {
+            // Started inside solid matter (a vertex under a box standing on its surface, a
+            // torus ring sunk into a column): what it meets there is no light that reaches
+            // the surface outside. Left out; the rest stands for the hemisphere.
+            r.inside += w;
+            return true;
         });
+    if (r.inside > 0 && r.inside < 1) r.G /= 1 - r.inside;
     r.harmonic_distance = inv_dist > 0 ? weight / inv_dist : INFINITY;
     if (gradients) {
         glm::dvec3 t, b;

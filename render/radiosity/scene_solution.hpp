@@ -104,6 +104,7 @@ inline uint64_t side_seed(size_t u) { return 0x9e3779b97f4a7c15ULL * (u + 1); }
 struct GatherResult {
     glm::dvec3 G{0};
     double harmonic_distance = 0;  // of the rays that hit (infinite when none did)
+    double inside = 0;  // share of the rays that started inside solid matter (left out)
     IrradianceGradients gradients;  // when asked for
 };
 

@@ -32,18 +32,27 @@ struct IgnoreUnmeshed {
     void operator()(const Hit&, const glm::dvec3&, double) const {}
 };
 
+// The default for rays that started inside solid matter (SceneMesh::solids): counted as any
+// other ray (false: not handled).
+struct KeepInside {
+    bool operator()(const glm::dvec3&, double) const { return false; }
+};
+
 // One ray of weight w: on_hit(element, unknown, share, t) for each vertex of the element it
 // lands on (barycentric share of w), on_miss(direction, w) when it escapes,
 // on_unmeshed(hit, direction, w) when it lands on a surface without elements.
-template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed>
+template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed,
+          class OnInside = KeepInside>
 void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& dir, double w, OnHit&& on_hit, OnMiss&& on_miss,
-               OnUnmeshed&& on_unmeshed = {}) {
+               OnUnmeshed&& on_unmeshed = {}, OnInside&& on_inside = {}) {
     Hit hit;
     if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
         on_miss(dir, w);
         return;
     }
+    if (glm::dot(hit.normal, dir) > 0 && mesh.solids.count(hit.object) && on_inside(dir, w))
+        return;
     glm::dvec3 bary;
     const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
     if (e < 0) {
@@ -64,10 +73,11 @@ struct IgnoreStratum {
 // `normal`, deterministic for `seed`, each of weight 1/rays. on_stratum(i, j, cells) comes
 // before the ray of stratum i (in sin^2 theta) and j (in phi) of cells x cells.
 template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed,
-          class OnStratum = IgnoreStratum>
+          class OnStratum = IgnoreStratum, class OnInside = KeepInside>
 void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& normal, uint64_t seed, int rays, OnHit&& on_hit,
-               OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}, OnStratum&& on_stratum = {}) {
+               OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}, OnStratum&& on_stratum = {},
+               OnInside&& on_inside = {}) {
     const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
     const double w = 1.0 / (cells * cells);
     SampleRng rng(seed);
@@ -76,7 +86,7 @@ void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
             const glm::dvec3 dir =
                 cosine_direction(normal, (i + rng.uniform()) / cells, (j + rng.uniform()) / cells);
             on_stratum(i, j, cells);
-            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed);
+            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed, on_inside);
         }
 }
 
