@@ -42,7 +42,13 @@ public:
         const long e = element_at(mesh_, hit, normal, bary);
         if (e < 0) return points_ ? apply_knobs(s_, points_->incident(hit.point, normal, 1))
                                   : glm::dvec3(0);
-        const uint32_t side = seen_side(mesh_.elements[size_t(e)], hit.normal, normal);
+        const MeshElement& el = mesh_.elements[size_t(e)];
+        const uint32_t side = seen_side(el, hit.normal, normal);
+        // A seen point on a sealed side is on another facet than this one (the far side of a
+        // coarsely faceted tube): it gathers for itself.
+        for (uint32_t v : el.v)
+            if (points_ && (mesh_.vertices[v].sealed >> side & 1))
+                return apply_knobs(s_, points_->incident(hit.point, normal, 1));
         return apply_knobs(s_, receivers_.value(e, bary, side));
     }
 
