@@ -288,7 +288,7 @@ bool closed_leaves(const NodeStore& store, uint32_t index, std::vector<const sce
 std::vector<const scene::Object*> Geometry::solid_primitives(const glm::dvec3& eye) const {
     std::vector<const scene::Object*> out;
     for (size_t i = 0; i < impl_->placed.size(); ++i) {
-        if (!placed_is_opaque(i) || inside_placed(i, eye)) continue;
+        if (!hides_inside(i, eye)) continue;
         const size_t mark = out.size();
         if (!closed_leaves(impl_->store, impl_->placed_nodes[i], out)) out.resize(mark);
     }

@@ -67,6 +67,11 @@ public:
     // lets light through, and camera and reflection rays do not pass it by (no_image,
     // no_reflection).
     bool placed_is_opaque(size_t i) const;
+    // Whether nothing seen from `eye` lies inside placed_objects()[i]: it is opaque and `eye`
+    // is outside it.
+    bool hides_inside(size_t i, const glm::dvec3& eye) const {
+        return placed_is_opaque(i) && !inside_placed(i, eye);
+    }
 
 private:
     struct Impl;

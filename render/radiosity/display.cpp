@@ -46,9 +46,10 @@ public:
         const uint32_t side = seen_side(el, hit.normal, normal);
         // A seen point on a sealed side is on another facet than this one (the far side of a
         // coarsely faceted tube): it gathers for itself.
-        for (uint32_t v : el.v)
-            if (points_ && (mesh_.vertices[v].sealed >> side & 1))
-                return apply_knobs(s_, points_->incident(hit.point, normal, 1));
+        if (points_)
+            for (uint32_t v : el.v)
+                if (mesh_.vertices[v].sealed >> side & 1)
+                    return apply_knobs(s_, points_->incident(hit.point, normal, 1));
         return apply_knobs(s_, receivers_.value(e, bary, side));
     }
 

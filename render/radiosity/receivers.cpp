@@ -270,10 +270,9 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                 };
                 // The seen elements themselves, and those of their pieces still in view (the
                 // rest of a large element may reach far outside the image).
-                const bool seen = t.depth == 0 || options.view_cos >= 1 || in_view(near) ||
-                                  in_view(a) || in_view(b) || in_view(c) ||
-                                  in_view((a + b + c) / 3.0);
-                if (seen && longest > options.max_span * options.image_width * pixel) {
+                if (longest > options.max_span * options.image_width * pixel &&
+                    (t.depth == 0 || options.view_cos >= 1 || in_view(near) || in_view(a) ||
+                     in_view(b) || in_view(c) || in_view((a + b + c) / 3.0))) {
                     marks.emplace_back(INFINITY, i);
                     continue;
                 }

@@ -101,6 +101,23 @@ size_t cell_index(const SceneMesh& m, const glm::ivec3& c) {
     return (size_t(c.z) * m.grid_size.y + c.y) * m.grid_size.x + c.x;
 }
 
+void build_frames(SceneMesh& m) {
+    m.frames.reserve(m.elements.size());
+    for (const MeshElement& e : m.elements) {
+        SceneMesh::Frame f;
+        f.a = m.vertices[e.v[0]].position;
+        f.normal = e.normal;
+        f.e1 = m.vertices[e.v[1]].position - f.a;
+        f.e2 = m.vertices[e.v[2]].position - f.a;
+        f.d11 = glm::dot(f.e1, f.e1);
+        f.d12 = glm::dot(f.e1, f.e2);
+        f.d22 = glm::dot(f.e2, f.e2);
+        const double det = f.d11 * f.d22 - f.d12 * f.d12;
+        f.inv_det = det > 0 ? 1 / det : 0;  // 0: degenerate, never contains a point
+        m.frames.push_back(f);
+    }
+}
+
 void build_grid(SceneMesh& m) {
     Aabb all;
     for (const Aabb& b : m.boxes) all.expand(b);
@@ -121,20 +138,6 @@ void build_grid(SceneMesh& m) {
     for (const Aabb& b : m.boxes) each_cell(b, [&](size_t c) { ++count[c + 1]; });
     for (size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
     m.cell_start = count;
-    m.frames.reserve(m.elements.size());
-    for (const MeshElement& e : m.elements) {
-        SceneMesh::Frame f;
-        f.a = m.vertices[e.v[0]].position;
-        f.normal = e.normal;
-        f.e1 = m.vertices[e.v[1]].position - f.a;
-        f.e2 = m.vertices[e.v[2]].position - f.a;
-        f.d11 = glm::dot(f.e1, f.e1);
-        f.d12 = glm::dot(f.e1, f.e2);
-        f.d22 = glm::dot(f.e2, f.e2);
-        const double det = f.d11 * f.d22 - f.d12 * f.d12;
-        f.inv_det = det > 0 ? 1 / det : 0;  // 0: degenerate, never contains a point
-        m.frames.push_back(f);
-    }
     m.cell_items.resize(count[cells]);
     m.cell_slots.resize(count[cells]);
     m.grid_bounds = all;
@@ -155,11 +158,14 @@ void seal_sides(SceneMesh& mesh, const Geometry& geometry,
                 const std::vector<size_t>& first_element, const glm::dvec3& eye) {
     const PlacedObject* placed = geometry.placed_objects().data();
     const double step = 1e-3 * mesh.patch_size;  // as gathers leave the surface
+    std::vector<size_t> tested(mesh.vertices.size(), pieces.size());  // the last piece tested
     for (size_t k = 0; k < pieces.size(); ++k) {
         const size_t i = size_t(pieces[k] - placed);
-        if (!geometry.placed_is_opaque(i) || geometry.inside_placed(i, eye)) continue;
+        if (!geometry.hides_inside(i, eye)) continue;
         for (size_t e = first_element[k]; e < first_element[k + 1]; ++e)
             for (uint32_t v : mesh.elements[e].v) {
+                if (tested[v] == k) continue;  // a vertex is shared by several elements
+                tested[v] = k;
                 MeshVertex& mv = mesh.vertices[v];
                 for (uint32_t side = 0; side < 2; ++side) {
                     const glm::dvec3 n = side ? -mv.normal : mv.normal;
@@ -186,7 +192,6 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
 
     // Finite shapes first: their extent bounds the infinite planes.
     MeshOptions opt;
-    std::vector<std::vector<Patch>> patches(pieces.size());
     Aabb bounds;
     const double coarse = 1e30;  // one patch per face: only the extent matters here
     for (size_t i = 0; i < pieces.size(); ++i) {
@@ -248,6 +253,7 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
         if (inserted) mesh.per_object.emplace_back();
         mesh.per_object[it->second].elements.push_back(i);
     }
+    build_frames(mesh);
     build_grid(mesh);
     report_mesh_problems(mesh, mesh.warnings);
     for (SceneMesh::ObjectElements& o : mesh.per_object) {
