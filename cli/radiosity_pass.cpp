@@ -87,7 +87,7 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
         const auto t0 = std::chrono::steady_clock::now();
         const render::CameraModel camera(scene.camera, render.width, render.height);
         const std::vector<char> seen =
-            rad::visible_sides(*mesh_, geometry, camera, render.width, render.height);
+            rad::visible_sides(*mesh_, geometry, camera, render.width, render.height, threads);
         gathered_ = size_t(std::count(seen.begin(), seen.end(), 1));
         rad::SubdivisionOptions subdivision = options.subdivision;
         // One pixel's footprint, from two neighbouring rays at the image's centre.

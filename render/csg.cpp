@@ -59,9 +59,11 @@ inline bool intersect_primitive(const NodeStore& store, const Node& n, uint32_t 
     return true;
 }
 
-// Nearest hit ignoring the node's own clipped_by.
+// Nearest hit ignoring the node's own clipped_by (`any`: the first member's accepted hit). The
+// members themselves are always asked for their nearest hit: the retries from a rejected hit
+// rely on it.
 bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
-                         double tmax, bool shadow, NodeHit& hit) {
+                         double tmax, bool shadow, NodeHit& hit, bool any) {
     const Node& n = store.nodes[index];
     if (n.kind == NodeKind::Shape)
         return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit);
@@ -74,8 +76,11 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
         if (box.empty() || (box.finite() && !slab.hits(box, tmin, best))) continue;
         NodeHit h;
         double from = tmin;
+        // A union rejects nothing, so its members too may answer with any hit.
+        const bool member_any = any && n.kind == NodeKind::Union;
         for (int tries = 0; tries < kMaxRejected &&
-                            intersect_node(store, c, ray, from, best, shadow, h); ++tries) {
+                            intersect_node(store, c, ray, from, best, shadow, h, member_any);
+             ++tries) {
             if (n.kind == NodeKind::Union || csg_accepts(store, n, i, ray.at(h.shape.t))) {
                 best = h.shape.t;
                 hit = h;
@@ -84,6 +89,7 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
             }
             from = h.shape.t;  // rejected: look further along (strictly beyond it)
         }
+        if (found && any) return true;
     }
     return found;
 }
@@ -91,15 +97,18 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
 }  // namespace
 
 bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
-                    double tmax, bool shadow, NodeHit& hit) {
+                    double tmax, bool shadow, NodeHit& hit, bool any) {
     const Node& n = store.nodes[index];
     // The common case (a plain primitive) without the retry loop.
     if (n.kind == NodeKind::Shape && n.clip_count == 0 && n.bound_count == 0)
         return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit);
     if (n.bound_count && !ray_meets_bounds(store, n, ray)) return false;
+    // Clipped: the retries from a clipped-away hit need the nearest one.
+    any = any && n.clip_count == 0;
     double from = tmin;
     for (int tries = 0; tries < kMaxRejected &&
-                        intersect_unclipped(store, index, ray, from, tmax, shadow, hit); ++tries) {
+                        intersect_unclipped(store, index, ray, from, tmax, shadow, hit, any);
+         ++tries) {
         if (n.clip_count == 0 || inside_all(store, n.clips, n.clip_count, ray.at(hit.shape.t)))
             return true;
         from = hit.shape.t;

@@ -66,6 +66,26 @@ bool clear_node(const NodeStore& store, uint32_t index) {
     return true;
 }
 
+// Every surface under node `index` stops all light: no texture (a mesh triangle's or a blob
+// component's included) has a layer that may let light through.
+bool opaque_node(const NodeStore& store, uint32_t index) {
+    const Node& n = store.nodes[index];
+    if (n.kind != NodeKind::Shape) {
+        for (uint32_t i = 0; i < n.child_count; ++i)
+            if (!opaque_node(store, store.links[n.children + i])) return false;
+        return true;
+    }
+    if (may_pass_light(n.texture) || may_pass_light(n.interior_texture)) return false;
+    const ShapeData& d = store.shapes[n.shape];
+    if (const auto* mesh = std::get_if<std::unique_ptr<MeshShape>>(&d))
+        for (const scene::LayeredTexture& t : (*mesh)->mesh->textures)
+            if (may_pass_light(&t)) return false;
+    if (const auto* blob = std::get_if<BlobShape>(&d))
+        for (const scene::LayeredTexture* t : blob->textures)
+            if (may_pass_light(t)) return false;
+    return true;
+}
+
 // A bounded root's kind and flags (unbounded ones are never skipped as clear: no box can say
 // where their surfaces are).
 Root make_root(const NodeStore& store, uint32_t index, bool bounded) {
@@ -150,6 +170,7 @@ struct Geometry::Impl {
     std::vector<uint32_t> placed_nodes;  // their nodes
     bool listable[kQueries] = {};  // every root seen is a direct kind: visit_shadow_hits works
     bool mostly_passes_light[kQueries] = {};
+    bool opaque_only[kQueries] = {};  // every root seen is an opaque_node
     // Boxes of the clear roots that shadow rays see, grown by twice the shadow tolerance, in
     // the order of clear_bvh.
     std::vector<Aabb> clear_boxes;
@@ -189,12 +210,13 @@ struct Geometry::Impl {
             const int k = int(q);
             const uint8_t hide = hidden_bits(q);
             size_t seen = 0, passing_light = 0;
-            listable[k] = true;
+            listable[k] = opaque_only[k] = true;
             for (const auto* list : {&bounded, &unbounded})
                 for (const Root& r : *list) {
                     if (r.hidden & hide) continue;
                     ++seen;
                     listable[k] = listable[k] && r.kind != Root::Kind::Node;
+                    opaque_only[k] = opaque_only[k] && opaque_node(store, r.node);
                     const Node& n = store.nodes[r.node];
                     passing_light += may_pass_light(n.texture) || may_pass_light(n.interior_texture);
                 }
@@ -333,6 +355,24 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Q
 
     resolve_hit(store, ray, best_t, best, hit);
     return true;
+}
+
+bool Geometry::opaque_only(Query query) const { return impl_->opaque_only[int(query)]; }
+
+bool Geometry::occluded(const Ray& ray, double t_min, double t_max, Query query) const {
+    const NodeStore& store = impl_->store;
+    const LocalRay local{ray.origin, ray.dir};
+    bool found = false;
+    double limit = t_max;  // -inf once found: the BVH walk then meets no further box
+    impl_->for_each_candidate(ray, t_min, limit, query, [&](const Root& r) {
+        NodeHit h;
+        if (found) return;
+        const bool hit = r.kind == Root::Kind::Node
+                             ? intersect_node(store, r.node, ray, t_min, t_max, true, h, true)
+                             : intersect_root(store, r, ray, local, t_min, t_max, true, h);
+        if (hit) found = true, limit = -Aabb::inf;
+    });
+    return found;
 }
 
 Intersector::Listing Geometry::shadow_listing(Query query) const {

@@ -50,6 +50,8 @@ public:
     Listing shadow_listing(Query query) const override;
 
     bool has_clear_objects() const override;
+    bool opaque_only(Query query) const override;
+    bool occluded(const Ray& ray, double t_min, double t_max, Query query) const override;
     bool near_clear_object(const glm::dvec3& p) const override;
 
     // True if world point p is inside `object` (used for media/fog decisions and tests).

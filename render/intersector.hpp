@@ -44,6 +44,15 @@ public:
     // object's surface may lie within twice kShadowTolerance of p.
     virtual bool has_clear_objects() const { return false; }
     virtual bool near_clear_object(const glm::dvec3& /*p*/) const { return false; }
+    // Every surface `query` sees stops all light (no texture layer lets any through): a
+    // shadow ray is then blocked exactly when occluded() finds some surface, the nearest or
+    // not, and needs no walk from surface to surface.
+    virtual bool opaque_only(Query) const { return false; }
+    // Whether some surface `query` sees lies at t_min < t < t_max (not necessarily the nearest).
+    virtual bool occluded(const Ray& ray, double t_min, double t_max, Query query) const {
+        Hit hit;
+        return intersect(ray, t_min, t_max, hit, query);
+    }
 };
 
 }  // namespace lumen::render

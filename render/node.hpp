@@ -82,9 +82,11 @@ struct NodeHit {
     uint32_t leaf = 0;
 };
 
-// Nearest hit of node `index` with tmin < t < tmax on the world ray.
+// Nearest hit of node `index` with tmin < t < tmax on the world ray. `any`: some hit in that
+// range, not necessarily the nearest (an occlusion test: a CSG stops at its first member with
+// an accepted hit).
 bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
-                    double tmax, bool shadow, NodeHit& hit);
+                    double tmax, bool shadow, NodeHit& hit, bool any = false);
 // Whether world point p is inside node `index` (inverse, CSG and clipped_by applied).
 bool inside_node(const NodeStore& store, uint32_t index, const glm::dvec3& p);
 

@@ -176,6 +176,15 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         if (!skipping.gave_up()) return skipping.filter();
     }
     ShadowWalk all(dir, distance, interiors, counters, nullptr);
+    if (!solid_length && geometry.opaque_only(Query::Shadow)) {
+        // The walk would stop, black, at its first surface: any surface within its first
+        // query's reach decides, and an occlusion test finds one sooner than the nearest.
+        double t_max;
+        if (all.next_query(t_max) &&
+            geometry.occluded(Ray{point, dir}, kShadowTolerance, t_max, Query::Shadow))
+            return glm::dvec3(0);
+        return all.filter();
+    }
     step_through(geometry, Query::Shadow, point, all);
     if (solid_length) *solid_length = all.solid_length();
     return all.filter();

@@ -1,6 +1,7 @@
 // Shadow rays through filtering surfaces: listing the surfaces past the first in one pass (plain spheres,
 // planes and boxes) gives the light, and the query count, of POV's one query per surface;
-// skipping clear objects gives the same light.
+// skipping clear objects gives the same light; in scenes of opaque objects an occlusion test
+// (any surface, not the nearest) gives the light of the walk.
 #include <cmath>
 #include <random>
 
@@ -308,6 +309,86 @@ TEST(ShadowFilter, WhichTexturesMayPassLight) {
     map_texture->texture_map = {{0, solid}, {1, solid}};
     EXPECT_FALSE(may_pass_light(&by_map));
 }
+
+std::shared_ptr<scene::Object> painted(scene::Shape shape, std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0.1, 1);
+    auto o = make(std::move(shape));
+    o->texture = {plain({u(rng), u(rng), u(rng), 0, 0})};
+    return o;
+}
+
+TEST(ShadowFilter, OpaqueScenesTestForAnySurfaceNotTheNearest) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(-3, 3), r(0.3, 1.2);
+    std::vector<scene::ObjectPtr> objects;
+    for (int i = 0; i < 6; ++i)
+        objects.push_back(painted(scene::Sphere{{u(rng), u(rng), u(rng)}, r(rng)}, rng));
+    objects.push_back(painted(scene::Plane{{0, 1, 0}, -2.5}, rng));
+    objects.push_back(painted(scene::Torus{1.5, 0.3, false}, rng));
+    // CSG whose members are rejected along the way: a hollowed box with a hole, an
+    // intersection, a union of a difference, a clipped sphere, a no_shadow box.
+    objects.push_back(csg(scene::CsgOp::Difference,
+                          {painted(scene::Box{{-2, -2, -2}, {2, 2, 2}}, rng),
+                           painted(scene::Box{{-1.8, -1.8, -1.8}, {1.8, 1.8, 1.8}}, rng),
+                           painted(scene::Cylinder{{0, -3, 0}, {0, 3, 0}, 0.8, false}, rng)}));
+    objects.push_back(csg(scene::CsgOp::Intersection,
+                          {painted(scene::Sphere{{1, 1, 1}, 1}, rng),
+                           painted(scene::Box{{0.5, 0.5, 0.5}, {3, 3, 3}}, rng)}));
+    objects.push_back(csg(scene::CsgOp::Union,
+                          {csg(scene::CsgOp::Difference,
+                               {painted(scene::Sphere{{-1, 0, 1}, 0.9}, rng),
+                                painted(scene::Sphere{{-1, 0.5, 1}, 0.6}, rng)}),
+                           painted(scene::Sphere{{-1, -1, -1}, 0.5}, rng)}));
+    auto clipped = painted(scene::Sphere{{0, 1, -1}, 1}, rng);
+    clipped->clipped_by = {make(scene::Plane{{0, 1, 0}, 1.2})};
+    objects.push_back(clipped);
+    auto ghost = painted(scene::Box{{-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}}, rng);
+    ghost->no_shadow = true;
+    objects.push_back(ghost);
+    const Geometry geometry(scene_of(objects));
+    ASSERT_TRUE(geometry.opaque_only(Query::Shadow));
+    const Stepping walking(geometry, Intersector::Listing::Never);  // never takes the shortcut
+    ASSERT_FALSE(walking.opaque_only(Query::Shadow));
+
+    int blocked = 0, open = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const glm::dvec3 from{u(rng), u(rng), u(rng)};
+        const glm::dvec3 to{u(rng) * 3, i % 2 ? 8 : -8, u(rng) * 3};
+        const glm::dvec3 dir = glm::normalize(to - from);
+        const double distance = glm::length(to - from);
+        TraceCounters a, b;
+        const glm::dvec3 fa = shadow_filter(geometry, from, dir, distance, {}, a);
+        const glm::dvec3 fb = shadow_filter(walking, from, dir, distance, {}, b);
+        ASSERT_EQ(fa, fb) << i;
+        EXPECT_EQ(a.shadow_rays, b.shadow_rays) << i;
+        (fa == glm::dvec3(0) ? blocked : open) += 1;
+        // occluded() finds a surface exactly where the nearest-hit query does.
+        for (Query q : {Query::All, Query::Shadow}) {
+            Hit hit;
+            const Ray ray{from, dir};
+            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q),
+                      geometry.intersect(ray, 1e-3, distance, hit, q))
+                << i;
+        }
+    }
+    EXPECT_GT(blocked, 1000);
+    EXPECT_GT(open, 500);
+
+    // One surface that may let light through, anywhere in a CSG, ends the shortcut.
+    std::vector<scene::ObjectPtr> with_glass = objects;
+    auto pane = make(scene::Box{{-1, -1, -1}, {1, 1, 1}});
+    pane->texture = {plain({1, 1, 1, 0.5, 0})};
+    with_glass.push_back(csg(scene::CsgOp::Union, {painted(scene::Sphere{{0, 0, 0}, 1}, rng), pane}));
+    EXPECT_FALSE(Geometry(scene_of(with_glass)).opaque_only(Query::Shadow));
+    // A glass object that casts no shadow is not seen by shadow rays.
+    pane->no_shadow = true;
+    std::vector<scene::ObjectPtr> shadowless = objects;
+    shadowless.push_back(pane);
+    const Geometry g(scene_of(shadowless));
+    EXPECT_TRUE(g.opaque_only(Query::Shadow));
+    EXPECT_FALSE(g.opaque_only(Query::All));
+}
+
 
 }  // namespace
 }  // namespace lumen::render

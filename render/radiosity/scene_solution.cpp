@@ -44,7 +44,9 @@ void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t
         return;
     }
     std::atomic<size_t> next{0};
-    constexpr size_t chunk = 16;
+    // Chunks of up to 16 items, small enough that each worker takes several: one costly last
+    // chunk of a short list (a subdivision level's few new vertices) would keep the others idle.
+    const size_t chunk = std::clamp<size_t>(n / (8 * workers), 1, 16);
     std::exception_ptr failure;
     std::mutex failure_mutex;
     auto work = [&] {
@@ -137,24 +139,33 @@ std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& 
 }
 
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
-                                const CameraModel& camera, int width, int height) {
+                                const CameraModel& camera, int width, int height, int threads) {
+    // Rows in parallel, each chunk of rows marking its own list (no shared writes); the lists
+    // are or-ed after.
+    std::mutex merge_mutex;
     std::vector<char> seen(mesh.unknowns(), 0);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const std::optional<Ray> sample = camera.ray(x, y);
-            if (!sample) continue;
-            const Ray& ray = *sample;
-            Hit hit;
-            if (!geometry.intersect(ray, kMinDepth, std::numeric_limits<double>::infinity(), hit,
-                                    Query::All))
-                continue;
-            glm::dvec3 bary;
-            const long e = mesh.find(ray.origin, ray.dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
-            if (e < 0) continue;
-            const MeshElement& el = mesh.elements[size_t(e)];
-            const uint32_t side = seen_side(el, hit.normal, -ray.dir);
-            for (uint32_t v : el.v) seen[2 * v + side] = 1;
-        }
+    parallel_for(size_t(std::max(height, 0)), threads, [&](size_t begin, size_t end) {
+        std::vector<char> mine(mesh.unknowns(), 0);
+        for (size_t y = begin; y < end; ++y)
+            for (int x = 0; x < width; ++x) {
+                const std::optional<Ray> sample = camera.ray(x, double(y));
+                if (!sample) continue;
+                const Ray& ray = *sample;
+                Hit hit;
+                if (!geometry.intersect(ray, kMinDepth, std::numeric_limits<double>::infinity(),
+                                        hit, Query::All))
+                    continue;
+                glm::dvec3 bary;
+                const long e = mesh.find(ray.origin, ray.dir, hit.t, 1e-4 + 1e-7 * hit.t,
+                                         hit.object, bary);
+                if (e < 0) continue;
+                const MeshElement& el = mesh.elements[size_t(e)];
+                const uint32_t side = seen_side(el, hit.normal, -ray.dir);
+                for (uint32_t v : el.v) mine[2 * v + side] = 1;
+            }
+        std::lock_guard lock(merge_mutex);
+        for (size_t u = 0; u < seen.size(); ++u) seen[u] |= mine[u];
+    });
     return seen;
 }
 

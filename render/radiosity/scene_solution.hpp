@@ -77,9 +77,9 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                                       const RadiosityOptions& options, int threads,
                                       const UnmeshedSurfaces* unmeshed = nullptr);
 
-// Which vertex sides the camera sees (one primary ray per pixel).
+// Which vertex sides the camera sees (one primary ray per pixel), rows on `threads` threads.
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
-                                const CameraModel& camera, int width, int height);
+                                const CameraModel& camera, int width, int height, int threads);
 
 // Where the gathers and light samples of a vertex side start: a hair inside the adjacent
 // elements (off shared edges and corners).
