@@ -109,9 +109,13 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
             subdivision.view_dir = centre;
             subdivision.view_cos = widest > 0.9999 ? 1.0 : widest;
         }
+        // Without form factors the solution's G (zeros when loaded from a file) stands in
+        // for nothing: what the receivers do not gather, points gather.
+        static const std::vector<glm::dvec3> none;
         receivers_ = std::make_unique<rad::ReceiverMesh>(
-            rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays,
-                         threads, solution_->G, subdivision, points_.get()));
+            rad::receive(scene, *mesh_, geometry, solution_->B, seen, ds.gather_rays, threads,
+                         rad::needs_form_factors(scene, options) ? solution_->G : none,
+                         subdivision, points_.get()));
         gather_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         display_ = rad::make_preview(*mesh_, *receivers_, points_.get(), ds);
     } else {
@@ -129,11 +133,14 @@ std::string RadiosityPass::summary() const {
         line += "solution reused (only the camera changed)";
     } else {
         const bool cube = options_.form_factors == rad::FormFactorMethod::Hemicube;
-        line += "form factors " + seconds(info_.form_factor_seconds) + " (" +
-                rad::form_factor_name(options_.form_factors) + " " +
-                (cube ? "resolution " + std::to_string(options_.hemicube_res)
-                      : std::to_string(info_.ff_rays) + " rays") +
-                "), solve " + seconds(info_.solve_seconds) +
+        line += (info_.ff_rays == 0 && !cube
+                     ? std::string("no form factors (one bounce)")
+                     : "form factors " + seconds(info_.form_factor_seconds) + " (" +
+                           rad::form_factor_name(options_.form_factors) + " " +
+                           (cube ? "resolution " + std::to_string(options_.hemicube_res)
+                                 : std::to_string(info_.ff_rays) + " rays") +
+                           ")") +
+                ", solve " + seconds(info_.solve_seconds) +
                 " (" + info_.method + " " + std::to_string(info_.iterations) + ")";
     }
     if (const auto* g = dynamic_cast<const rad::GatherStats*>(display_.get()))

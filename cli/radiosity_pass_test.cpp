@@ -227,6 +227,59 @@ TEST(RadiosityPass, CeilingGetsOnlyIndirectLightAndNoNaN) {
     EXPECT_LT(floor, ceiling);
 }
 
+// One bounce (recursion_limit 1) is B = E + ρH: the solve skips the form factors, whose G
+// would only stand in for what the display does not gather, and a point the camera did not
+// see (here the floor, under a camera looking up at the ceiling) gathers for itself, close to
+// what the form factors would have given it; never the zero of an ungathered vertex.
+TEST(RadiosityPass, OneBounceSkipsFormFactorsAndGathersWhatItDidNotSee) {
+    SourceManager sources;
+    std::string text = room(0, 0.8, "radiosity { recursion_limit 1 }");
+    text.replace(text.find("look_at <0, 1, 0>"), 17, "look_at <0, 2, 0.01> angle 20");
+    const scene::Scene s = parse(sources, text);
+    auto options = small();
+    options.ff_rays = 0;  // the default
+    EXPECT_FALSE(render::radiosity::needs_form_factors(s, options));
+    auto named = options;
+    named.ff_rays = 16;
+    EXPECT_TRUE(render::radiosity::needs_form_factors(s, named));
+    auto deeper = options;
+    deeper.bounces = 2;
+    EXPECT_TRUE(render::radiosity::needs_form_factors(s, deeper));
+
+    render::Geometry geometry(s);
+    render::ThreadState state;
+    render::Hit floor_hit, ceiling_hit;
+    ASSERT_TRUE(geometry.intersect(render::Ray{{0.5, 1, 0.3}, {0, -1, 0}}, 1e-4, 1e9, floor_hit));
+    ASSERT_TRUE(geometry.intersect(render::Ray{{0, 1, 0}, {0, 1, 0}}, 1e-4, 1e9, ceiling_hit));
+    auto incident = [&](const render::radiosity::RadiosityOptions& o, std::string& line,
+                        size_t& g_size, double& ceiling) {
+        RadiosityPass pass;
+        std::vector<std::string> log;
+        const render::IndirectLight* light = pass.prepare(s, o, view(), log);
+        EXPECT_NE(light, nullptr);
+        if (!light) return 0.0;
+        line = pass.summary();
+        g_size = pass.solution()->G.size();
+        ceiling = light->incident(ceiling_hit, {0, -1, 0}, state).x;
+        return light->incident(floor_hit, {0, 1, 0}, state).x;
+    };
+    std::string skipped_line, named_line;
+    size_t skipped_g = 0, named_g = 0;
+    double skipped_ceiling = 0, named_ceiling = 0;
+    const double skipped = incident(options, skipped_line, skipped_g, skipped_ceiling);
+    const double with_ff = incident(named, named_line, named_g, named_ceiling);
+    EXPECT_NE(skipped_line.find("no form factors (one bounce)"), std::string::npos) << skipped_line;
+    EXPECT_EQ(named_line.find("no form factors"), std::string::npos) << named_line;
+    EXPECT_EQ(skipped_g, 0u);
+    EXPECT_GT(named_g, 0u);
+    // The seen ceiling is gathered either way (its smoothing no longer mixes in the form
+    // factors' values of unseen neighbours); the unseen floor sees the ceiling's direct light
+    // only through its own gather.
+    EXPECT_NEAR(skipped_ceiling, named_ceiling, 0.05 * named_ceiling);
+    EXPECT_GT(with_ff, 0.01);
+    EXPECT_NEAR(skipped, with_ff, 0.3 * with_ff);
+}
+
 // One far object makes the default patches huge: a floor element then fills the view, and
 // its corners, far outside the image, see nothing of a small emitter near the camera. The
 // preview splits what is seen wider than 1/8 of the image, so the floor beside the emitter

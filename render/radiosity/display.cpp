@@ -45,11 +45,14 @@ public:
         const MeshElement& el = mesh_.elements[size_t(e)];
         const uint32_t side = seen_side(el, hit.normal, normal);
         // A seen point on a sealed side is on another facet than this one (the far side of a
-        // coarsely faceted tube): it gathers for itself.
-        if (points_)
-            for (uint32_t v : el.v)
-                if (mesh_.vertices[v].sealed >> side & 1)
-                    return apply_knobs(s_, points_->incident(hit.point, normal, 1));
+        // coarsely faceted tube), and one whose corners were not gathered (seen only in a
+        // reflection or by an anti-aliasing sample, with no form factors to stand in): it
+        // gathers for itself.
+        if (points_) {
+            bool own = !receivers_.covers(e, side);
+            for (uint32_t v : el.v) own = own || (mesh_.vertices[v].sealed >> side & 1);
+            if (own) return apply_knobs(s_, points_->incident(hit.point, normal, 1));
+        }
         return apply_knobs(s_, receivers_.value(e, bary, side));
     }
 

@@ -40,6 +40,7 @@ ReceiverMesh::ReceiverMesh(const SceneMesh& mesh) : mesh_(mesh) {
         for (uint32_t v : e.v) objects_[v] = e.object;
     reach_.assign(n, 1e-2 * mesh.patch_size);  // corners lie on the surface
     G.assign(2 * n, glm::dvec3(0));
+    known.assign(2 * n, 0);
     leaves.reserve(mesh.elements.size());
     for (const MeshElement& e : mesh.elements) leaves.push_back({e.v, 0, 0});
 }
@@ -61,8 +62,17 @@ uint32_t ReceiverMesh::midpoint(uint32_t a, uint32_t b, uint32_t c) {
     objects_.push_back(objects_[a]);
     // A chord of an arc of up to 90 degrees is at most 0.21 of its length off the arc.
     reach_.push_back(0.5 * glm::length(positions_[b] - positions_[a]));
-    for (uint32_t side = 0; side < 2; ++side) G.push_back(0.5 * (G[2 * a + side] + G[2 * b + side]));
+    for (uint32_t side = 0; side < 2; ++side) {
+        G.push_back(0.5 * (G[2 * a + side] + G[2 * b + side]));
+        known.push_back(known[2 * a + side] && known[2 * b + side]);
+    }
     return it->second;
+}
+
+bool ReceiverMesh::covers(long element, uint32_t side) const {
+    for (uint32_t v : mesh_.elements[size_t(element)].v)
+        if (!known[2 * v + side]) return false;
+    return true;
 }
 
 glm::dvec3 ReceiverMesh::value(long element, const glm::dvec3& bary, uint32_t side) const {
@@ -109,7 +119,7 @@ glm::dvec3 ReceiverMesh::value(long element, const glm::dvec3& bary, uint32_t si
 }
 
 void fill_buried(const std::vector<ReceiverMesh::Triangle>& leaves, std::vector<glm::dvec3>& G,
-                 std::vector<char>& buried) {
+                 std::vector<char>& buried, const std::vector<char>* known) {
     if (std::find(buried.begin(), buried.end(), 1) == buried.end()) return;
     for (int ring = 0; ring < 3; ++ring) {
         std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
@@ -121,7 +131,8 @@ void fill_buried(const std::vector<ReceiverMesh::Triangle>& leaves, std::vector<
                     if (!buried[u]) continue;
                     for (int b = 0; b < 3; ++b) {
                         const size_t w = 2 * size_t(t.v[b]) + side;
-                        if (b != a && !buried[w]) sum[u] += G[w], ++count[u];
+                        if (b != a && !buried[w] && (!known || (*known)[w]))
+                            sum[u] += G[w], ++count[u];
                     }
                 }
         bool changed = false;
@@ -136,13 +147,14 @@ void fill_buried(const std::vector<ReceiverMesh::Triangle>& leaves, std::vector<
 }
 
 std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,
-                               const std::vector<glm::dvec3>& G) {
+                               const std::vector<glm::dvec3>& G, const std::vector<char>* known) {
     std::vector<glm::dvec3> sum(G.size(), glm::dvec3(0));
     std::vector<double> weight(G.size(), 0.0);
     for (const ReceiverMesh::Triangle& t : triangles)
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < 3; ++b)
                 for (uint32_t side = 0; side < 2; ++side) {
+                    if (a != b && known && !(*known)[2 * t.v[b] + side]) continue;
                     const double w = a == b ? 1.0 : 0.5;  // a vertex is in several triangles
                     sum[2 * t.v[a] + side] += w * G[2 * t.v[b] + side];
                     weight[2 * t.v[a] + side] += w;
@@ -184,13 +196,15 @@ constexpr double kBuried = 0.9;
 
 // How far a triangle's corners disagree, in units of the split threshold (> 1: split).
 double disagreement(const ReceiverMesh::Triangle& t, const std::vector<glm::dvec3>& S,
-                    double tolerance, double floor) {
+                    const std::vector<char>& known, double tolerance, double floor) {
     double worst = 0;
     for (uint32_t side = 0; side < 2; ++side) {
         if (!(t.sides >> side & 1)) continue;
         for (int k = 0; k < 3; ++k) {
-            const glm::dvec3& a = S[2 * t.v[k] + side];
-            const glm::dvec3& b = S[2 * t.v[(k + 1) % 3] + side];
+            const size_t p = 2 * t.v[k] + side, q = 2 * t.v[(k + 1) % 3] + side;
+            if (!known[p] || !known[q]) continue;
+            const glm::dvec3& a = S[p];
+            const glm::dvec3& b = S[q];
             const double allowed = tolerance * (0.5 * (largest(a) + largest(b)) + floor);
             if (allowed > 0) worst = std::max(worst, largest(glm::abs(a - b)) / allowed);
         }
@@ -206,7 +220,15 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const std::vector<glm::dvec3>& fallback,
                      const SubdivisionOptions& options, const UnmeshedSurfaces* unmeshed) {
     ReceiverMesh r(mesh);
-    r.G = fallback;
+    if (!fallback.empty()) {
+        r.G = fallback;
+        r.known.assign(r.G.size(), 1);
+    } else {
+        // ρ = 0: no light is ever reflected, so G = 0 is as good as any (the form factors
+        // skip these too).
+        for (uint32_t u = 0; u < mesh.unknowns(); ++u)
+            r.known[u] = !needs_light(mesh.vertices[u / 2]);
+    }
     std::vector<char> buried(r.G.size(), 0);
     auto gather = [&](const std::vector<uint32_t>& unknowns) {
         buried.resize(r.G.size(), 0);
@@ -222,6 +244,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                 const GatherResult g = gather_point(scene, mesh, geometry, B, origin, n, rays,
                                                     side_seed(u), unmeshed);
                 r.G[u] = g.G;
+                r.known[u] = 1;
                 buried[u] = g.inside >= kBuried;
             }
         });
@@ -234,7 +257,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
             done[u / 2] |= uint8_t(1u << (u % 2));
         }
     gather(todo);
-    fill_buried(r.leaves, r.G, buried);
+    fill_buried(r.leaves, r.G, buried, &r.known);
     for (ReceiverMesh::Triangle& t : r.leaves)
         for (uint32_t v : t.v) t.sides |= done[v];
 
@@ -243,7 +266,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
     const double min_edge = options.min_element > 0 ? options.min_element : mesh.patch_size / 8;
     for (int level = 0; options.enabled && level < 16; ++level) {
         // Decide on smoothed values: the raw ones carry the per-vertex ray noise.
-        const std::vector<glm::dvec3> S = smooth(r.leaves, r.G);
+        const std::vector<glm::dvec3> S = smooth(r.leaves, r.G, &r.known);
         double mean = 0;
         for (uint32_t u : todo) mean += largest(S[u]);
         const double floor = todo.empty() ? 0 : 0.1 * mean / double(todo.size());
@@ -285,7 +308,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                                      options.pixel_angle * glm::length(centre - options.eye);
                 if (longest < options.min_pixels * pixel) continue;
             }
-            const double d = disagreement(t, S, options.tolerance, floor);
+            const double d = disagreement(t, S, r.known, options.tolerance, floor);
             if (d > 1) marks.emplace_back(d, i);
         }
         std::sort(marks.begin(), marks.end(), std::greater<>());
@@ -323,9 +346,9 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
         next.insert(next.end(), children.begin(), children.end());
         r.leaves = std::move(next);
         gather(fresh);
-        fill_buried(r.leaves, r.G, buried);
+        fill_buried(r.leaves, r.G, buried, &r.known);
     }
-    r.G = smooth(r.leaves, r.G);
+    r.G = smooth(r.leaves, r.G, &r.known);
     return r;
 }
 

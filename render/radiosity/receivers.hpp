@@ -42,8 +42,14 @@ public:
     // G at barycentric `bary` of scene mesh element `element` on `side`: descends through
     // the splits (real, or implied by a neighbour's midpoints) to a leaf and interpolates.
     glm::dvec3 value(long element, const glm::dvec3& bary, uint32_t side) const;
+    // Whether value() knows `side` of scene mesh element `element`: its corners' G is known
+    // (then so is every midpoint gathered below them).
+    bool covers(long element, uint32_t side) const;
 
     std::vector<glm::dvec3> G;         // per vertex side (2 v + side)
+    // Per vertex side: G holds its incident light (gathered, or the solution's fallback);
+    // without a fallback the others hold only a placeholder.
+    std::vector<char> known;
     std::vector<Triangle> leaves;      // the elements after splitting
     size_t split = 0;                  // elements split
 
@@ -64,8 +70,9 @@ private:
 };
 
 // The final gather at the `wanted` vertex sides with `rays` rays each against the solution's
-// B and `unmeshed` (the others keep `fallback`), the adaptive subdivision, and one pass of neighbour
-// smoothing over the resulting triangles (it cuts the per-vertex ray noise).
+// B and `unmeshed` (the others keep `fallback`, or are not known where it is empty), the
+// adaptive subdivision, and one pass of neighbour smoothing over the resulting triangles (it
+// cuts the per-vertex ray noise); splits, smoothing and buried sides use known values only.
 ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const std::vector<glm::dvec3>& B,
                      const std::vector<char>& wanted, int rays, int threads,
@@ -77,11 +84,14 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
 // standing on it, a ring sunk into a column) take the mean of their unburied neighbours on
 // the same side over the triangles sharing them, up to three rings deep; those with none
 // near keep what they gathered. Filled ones are no longer buried.
+// `known` (per vertex side, null: all) says which neighbours have a value to give.
 void fill_buried(const std::vector<ReceiverMesh::Triangle>& triangles, std::vector<glm::dvec3>& G,
-                 std::vector<char>& buried);
+                 std::vector<char>& buried, const std::vector<char>* known = nullptr);
 
-// One pass of neighbour averaging over the vertices sharing a triangle (same side).
+// One pass of neighbour averaging over the vertices sharing a triangle (same side), from the
+// neighbours whose value is `known` (null: all).
 std::vector<glm::dvec3> smooth(const std::vector<ReceiverMesh::Triangle>& triangles,
-                               const std::vector<glm::dvec3>& G);
+                               const std::vector<glm::dvec3>& G,
+                               const std::vector<char>* known = nullptr);
 
 }  // namespace lumen::render::radiosity

@@ -111,6 +111,12 @@ TEST(Receivers, SmoothingAveragesNeighboursPerSide) {
     EXPECT_NEAR(S[0].x, 1.0, 1e-12);  // (1·2 + 0.5·0 + 0.5·0) / 2
     EXPECT_NEAR(S[2].x, 0.5, 1e-12);  // (0.5·2) / 2
     EXPECT_NEAR(S[1].x, 0.0, 1e-12);  // back sides do not mix with front sides
+    // Neighbours whose value is not known (not gathered, no form factors) give nothing.
+    std::vector<char> known(6, 1);
+    known[2] = 0;  // vertex 1, front
+    const auto K = smooth(tris, G, &known);
+    EXPECT_NEAR(K[0].x, 2.0 / 1.5, 1e-12);  // (1·2 + 0.5·0) / 1.5
+    EXPECT_NEAR(K[2].x, 0.5, 1e-12);        // its own value still counts: (0.5·2) / 2
 }
 
 }  // namespace

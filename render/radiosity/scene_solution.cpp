@@ -90,6 +90,12 @@ int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options
     return one_bounce ? 4 : 16;
 }
 
+bool needs_form_factors(const scene::Scene& scene, const RadiosityOptions& options) {
+    const bool one_bounce = effective_bounces(scene, options) == 1 &&
+                            (options.method == Method::Auto || options.method == Method::Jacobi);
+    return !one_bounce || options.ff_rays > 0 || options.form_factors != FormFactorMethod::RayCast;
+}
+
 namespace {
 
 // A copy of the same declaration: scenes place copies on top of each other
@@ -297,10 +303,11 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     PointGatherSettings direct_only;
     direct_only.ambient_emission = ambient_emission(scene);
     const PointGather unmeshed(frame, mesh, nullptr, direct_only);
-    const VertexFormFactors F =
-        vertex_form_factors(scene, mesh, geometry, options, threads, &unmeshed);
+    const bool form_factors = needs_form_factors(scene, options);
+    VertexFormFactors F;
+    if (form_factors) F = vertex_form_factors(scene, mesh, geometry, options, threads, &unmeshed);
     info.form_factor_seconds = seconds_since(t0);
-    info.ff_rays = effective_ff_rays(scene, options);
+    info.ff_rays = form_factors ? effective_ff_rays(scene, options) : 0;
     t0 = std::chrono::steady_clock::now();
     check_reflectance(mesh, info.warnings);
 
@@ -394,7 +401,7 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     }
     for (glm::dvec3& b : B)
         if (!std::isfinite(b.x + b.y + b.z)) b = glm::dvec3(0);  // never a NaN in a pixel
-    sol.G = gather_all(B);
+    if (form_factors) sol.G = gather_all(B);
     sol.B = std::move(B);
     info.solve_seconds = seconds_since(t0);
     return sol;

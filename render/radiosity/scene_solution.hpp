@@ -48,7 +48,8 @@ struct VertexFormFactors {
 
 struct Solution {
     std::vector<glm::dvec3> B;  // per unknown: leaving radiosity (bounce k−1)
-    std::vector<glm::dvec3> G;  // per unknown: incident indirect light (bounce k)
+    std::vector<glm::dvec3> G;  // per unknown: incident indirect light (bounce k); empty
+                                // without form factors (needs_form_factors)
     int bounces = 0;            // k; 0 = converged
     uint64_t scene_key = 0;     // what the solution was computed for (save/load, animation)
 };
@@ -126,9 +127,14 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
 // The bounce count in effect: the option, else the scene's recursion_limit.
 int effective_bounces(const scene::Scene& scene, const RadiosityOptions& options);
 // Form-factor rays per vertex side: Radiosity_FF_Rays, else 16; 4 where the solve stops at
-// one bounce (B = E + ρH needs no form factors: they feed only the G of the vertices the
-// camera does not see, for reflections), which costs radiosity2.pov a third of its time.
+// one bounce.
 int effective_ff_rays(const scene::Scene& scene, const RadiosityOptions& options);
+// Whether the solve computes form factors. A solve that stops at one bounce (POV's
+// recursion_limit 1, Jacobi or auto) is B = E + ρH, and its G (F B) would only stand in for
+// the vertex sides the display does not gather; unless the options name a form-factor method
+// or ray count, it skips them, its solution has no G (empty), and the display gathers at
+// every point it shows instead (patio-radio_37.pov: 1.1 of 3.0 s went to form factors).
+bool needs_form_factors(const scene::Scene& scene, const RadiosityOptions& options);
 
 // Runs fn(begin, end) over [0, n) on up to `threads` threads (in chunks).
 void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn);

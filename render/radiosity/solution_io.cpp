@@ -29,8 +29,10 @@ void save_solution(const Solution& s, const std::string& path) {
         << "bounces " << s.bounces << '\n';
     char buf[160];
     for (size_t u = 0; u < s.B.size(); ++u) {
+        // A solve without form factors has no G: zeros (needs_form_factors says so on load).
+        const glm::dvec3 g = u < s.G.size() ? s.G[u] : glm::dvec3(0);
         std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g\n", s.B[u].x,
-                      s.B[u].y, s.B[u].z, s.G[u].x, s.G[u].y, s.G[u].z);
+                      s.B[u].y, s.B[u].z, g.x, g.y, g.z);
         out << buf;
     }
     out << "end\n";
