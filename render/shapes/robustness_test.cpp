@@ -212,6 +212,41 @@ TEST(Torus, MatchesBruteForceRootSearch) {
     EXPECT_GT(hits, 20);
 }
 
+// A large thin ring (an arch moulding of radiosity/patio-radio_37.pov): most rays through its
+// bounding sphere cross the ring's plane far from the tube, which a test before the quartic
+// rejects; it must reject nothing the quartic would find, grazing rays along the tube included.
+TEST(Torus, ThinRingMatchesBruteForceRootSearch) {
+    const double R = 130, r = 2;
+    Geometry g(scene_of({make(scene::Torus{R, r, false})}));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0, misses = 0;
+    for (int i = 0; i < 120; ++i) {
+        glm::dvec3 o{u(rng) * 200, u(rng) * 60, u(rng) * 200};
+        // Aim near the tube (within twice its radius), anywhere round the ring, or, one ray in
+        // four, anywhere in the bounding sphere.
+        const double phi = 3.14159265358979 * u(rng);
+        glm::dvec3 target{(R + 2 * r * u(rng)) * std::cos(phi), 2 * r * u(rng),
+                          (R + 2 * r * u(rng)) * std::sin(phi)};
+        if (i % 4 == 0) target = {u(rng) * 130, u(rng) * 130, u(rng) * 130};
+        if (i % 10 == 0) o.y = r * 0.999;  // in the tube's top plane: a long grazing span
+        Ray rr = ray(o, target - o);
+        const double tmax = 700;
+        double expected = first_root_by_scan(R, r, rr, tmax);
+        auto h = trace(g, rr);
+        if (expected < 0) {
+            EXPECT_FALSE(h) << i;
+            ++misses;
+            continue;
+        }
+        ASSERT_TRUE(h) << i;
+        ++hits;
+        EXPECT_NEAR(h->t, expected, tmax / 200000 * 1.01) << i;
+    }
+    EXPECT_GT(hits, 30);
+    EXPECT_GT(misses, 20);
+}
+
 TEST(Torus, GrazingTopAndDistantRays) {
     const double R = 2, r = 0.5;
     Geometry g(scene_of({make(scene::Torus{R, r, false})}));

@@ -16,6 +16,41 @@ TorusShape make_torus(const scene::Torus& t) {
     return out;
 }
 
+namespace {
+
+// The tube lies within |y| <= minor and major - minor <= |xz| <= major + minor. A ray whose
+// span [k0, k1] (unit direction d) crosses that slab only where its distance from the axis
+// stays outside the ring (most rays through a large thin ring's bounding sphere) cannot meet
+// it. Only a test, with a margin for the solver's rounding: the quartic keeps the chord.
+bool misses_tube(const TorusShape& s, const glm::dvec3& o, const glm::dvec3& d, double k0,
+                 double k1) {
+    const double slab = s.minor + 1e-6 * (s.major + s.minor);
+    if (std::fabs(d.y) > 1e-12) {
+        double a = (-slab - o.y) / d.y, b = (slab - o.y) / d.y;
+        if (a > b) std::swap(a, b);
+        k0 = std::max(k0, a);
+        k1 = std::min(k1, b);
+        if (!(k0 <= k1)) return true;
+    } else if (std::fabs(o.y) > slab) {
+        return true;
+    }
+    // The squared distance from the axis is a quadratic in k: least at its vertex or an end,
+    // greatest at an end.
+    const double A = d.x * d.x + d.z * d.z, B = o.x * d.x + o.z * d.z, C = o.x * o.x + o.z * o.z;
+    auto r2 = [&](double k) { return (A * k + 2 * B) * k + C; };
+    const double e0 = r2(k0), e1 = r2(k1);
+    double lo = std::min(e0, e1);
+    const double hi = std::max(e0, e1);
+    if (A > 0) {
+        const double kv = -B / A;
+        if (kv > k0 && kv < k1) lo = std::min(lo, r2(kv));
+    }
+    const double inner = std::max(0.0, s.major - slab), outer = s.major + slab;
+    return hi < inner * inner || lo > outer * outer;
+}
+
+}  // namespace
+
 bool intersect(const TorusShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
     double len = glm::length(r.d);
@@ -31,6 +66,7 @@ bool intersect(const TorusShape& s, const LocalRay& r, double tmin, double tmax,
     double k_in = -b - half, k_out = -b + half;
     double k_lo = std::max(k_in, tmin * len), k_hi = std::min(k_out, tmax * len);
     if (!(k_lo <= k_hi)) return false;
+    if (misses_tube(s, r.o, d, k_lo, k_hi)) return false;
     // Quartic in s = k - k_in from p = the sphere entry point.
     glm::dvec3 p = r.o + k_in * d;
     double R2 = s.major * s.major;
