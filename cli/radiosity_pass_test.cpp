@@ -280,6 +280,36 @@ TEST(RadiosityPass, OneBounceSkipsFormFactorsAndGathersWhatItDidNotSee) {
     EXPECT_NEAR(skipped, with_ff, 0.3 * with_ff);
 }
 
+// A vertex's direct light is the area mean of its elements' samples at their centroids (on
+// the true surface): a speck of shadow on the vertex itself no longer darkens every element
+// around it, and a sphere's chords, inside the sphere, still see the light above them.
+TEST(RadiosityPass, DirectLightSamplesTheElementsNotTheirCorners) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+                                 "#version 3.7; global_settings { radiosity { recursion_limit 1 } }\n"
+                                 "camera { location <0, 5, -5> look_at <0, 0, 0> }\n"
+                                 "light_source { <0, 20, 0> rgb 1 }\n"
+                                 "box { <-2, -0.1, -2>, <2, 0, 2> pigment { rgb 0.5 } }\n"
+                                 "sphere { <0, 0.05, 0>, 0.04 pigment { rgb 0.5 } }\n"
+                                 "sphere { <5, 1, 0>, 0.5 pigment { rgb 0.5 } }\n");
+    const render::RenderFrame frame(s);
+    const auto mesh = render::radiosity::build_scene_mesh(frame.geometry(), 1.0);
+    const auto H = render::radiosity::direct_light(frame, mesh, 2);
+    double speck = -1, open = -1, top = -1, top_y = -1;
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+        const auto& mv = mesh.vertices[v];
+        const double h = (mv.normal.y > 0 ? H[2 * v] : H[2 * v + 1]).x;
+        if (glm::length(mv.position - glm::dvec3(0, 0, 0)) < 1e-9) speck = h;
+        if (glm::length(mv.position - glm::dvec3(1, 0, 1)) < 1e-9) open = h;
+        if (glm::length(mv.position - glm::dvec3(5, 1, 0)) < 0.51 && mv.position.y > top_y)
+            top_y = mv.position.y, top = H[2 * v].x;
+    }
+    ASSERT_GT(open, 0.5);  // lit from straight above
+    EXPECT_GT(speck, 0.8 * open);  // its own sample lies in the speck's shadow
+    ASSERT_GT(top_y, 1.3);
+    EXPECT_GT(top, 0.5 * open);
+}
+
 // One far object makes the default patches huge: a floor element then fills the view, and
 // its corners, far outside the image, see nothing of a small emitter near the camera. The
 // preview splits what is seen wider than 1/8 of the image, so the floor beside the emitter
@@ -520,7 +550,9 @@ TEST(RadiosityPass, BrillianceShapesTheDirectLight) {
         const std::string text =
             "#version 3.7; global_settings { radiosity { recursion_limit 1 } }\n"
             "camera { location <0, 5, -5> look_at <0, 0, 0> }\n"
-            "light_source { <0, 1, -1.7320508075688772> rgb 1 }\n"
+            // Far off (60 degrees from the normal everywhere on the floor): the direct light
+            // is sampled over the elements around the vertex, not at the vertex alone.
+            "light_source { <0, 1000, -1732.0508075688772> rgb 1 }\n"
             "box { <-2, -0.1, -2>, <2, 0, 2> pigment { rgb 0.5 } finish { diffuse 1 brilliance " +
             std::to_string(brilliance) + " } }\n";
         const scene::Scene s = parse(sources, text);
@@ -537,7 +569,7 @@ TEST(RadiosityPass, BrillianceShapesTheDirectLight) {
     };
     const double one = first_bounce(1), two = first_bounce(2);
     EXPECT_GT(one, 0.05);
-    EXPECT_NEAR(two / one, 0.5, 1e-3);  // the gather origin sits a hair off the vertex
+    EXPECT_NEAR(two / one, 0.5, 1e-3);  // cos 60 degrees, squared against once
 }
 
 // Gauss-Seidel and progressive refinement run on the sparse rows: a mesh of more than the

@@ -130,15 +130,56 @@ bool onto_surface(const Intersector& geometry, const scene::Object* object, glm:
 }
 
 std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads) {
+    // Sampled at the elements' centroids, on the true surface, and given to each vertex side
+    // as the area-weighted mean of its elements': a vertex sits on an object's edge or where
+    // it meets another, where occluders are, and its own sample made B low all around it
+    // (radiosity/patio-radio_37.pov came out 0.010 darker than POV-Ray on average).
+    const size_t ne = mesh.elements.size();
+    std::vector<glm::dvec3> He(2 * ne, glm::dvec3(0));
+    parallel_for(ne, threads, [&](size_t begin, size_t end) {
+        TraceCounters counters;
+        for (size_t i = begin; i < end; ++i) {
+            const MeshElement& e = mesh.elements[i];
+            const MeshVertex& a = mesh.vertices[e.v[0]];
+            const MeshVertex& b = mesh.vertices[e.v[1]];
+            const MeshVertex& c = mesh.vertices[e.v[2]];
+            if (!needs_light(a) && !needs_light(b) && !needs_light(c)) continue;
+            glm::dvec3 p = (a.position + b.position + c.position) / 3.0, n = e.normal;
+            const double size = std::max({glm::length(b.position - a.position),
+                                          glm::length(c.position - b.position),
+                                          glm::length(a.position - c.position)});
+            // A chord of a curved shape lies inside it: from there every light is shadowed.
+            onto_surface(frame.geometry(), e.object, p, n, 0.25 * size + 1e-6 * mesh.patch_size);
+            He[2 * i] = direct_light_at(frame.lights(), frame.geometry(), p, n, a.brilliance,
+                                        counters, &He[2 * i + 1]);
+        }
+    });
     std::vector<glm::dvec3> H(mesh.unknowns(), glm::dvec3(0));
+    std::vector<double> weight(mesh.vertices.size(), 0.0);
+    for (size_t i = 0; i < ne; ++i) {
+        const MeshElement& e = mesh.elements[i];
+        for (uint32_t v : e.v) {
+            // Sides are the vertex's: its normal may face the element's back (welded shells).
+            const size_t same = glm::dot(e.normal, mesh.vertices[v].normal) >= 0 ? 0 : 1;
+            H[2 * v] += e.area * He[2 * i + same];
+            H[2 * v + 1] += e.area * He[2 * i + (1 - same)];
+            weight[v] += e.area;
+        }
+    }
     parallel_for(mesh.vertices.size(), threads, [&](size_t begin, size_t end) {
         TraceCounters counters;
         for (size_t v = begin; v < end; ++v) {
             const MeshVertex& mv = mesh.vertices[v];
-            if (!needs_light(mv)) continue;
-            const glm::dvec3 p = gather_origin(mesh, mv);
-            H[2 * v] = direct_light_at(frame.lights(), frame.geometry(), p, mv.normal,
-                                       mv.brilliance, counters, &H[2 * v + 1]);
+            if (!needs_light(mv)) {
+                H[2 * v] = H[2 * v + 1] = glm::dvec3(0);
+            } else if (weight[v] > 0) {
+                H[2 * v] /= weight[v];
+                H[2 * v + 1] /= weight[v];
+            } else {  // no element with an area: its own sample
+                H[2 * v] = direct_light_at(frame.lights(), frame.geometry(),
+                                           gather_origin(mesh, mv), mv.normal, mv.brilliance,
+                                           counters, &H[2 * v + 1]);
+            }
         }
     });
     return H;
