@@ -70,6 +70,23 @@ TEST(RadiosityMeshChecks, OverlapsOfDifferentMaterialsAreReported) {
     EXPECT_GE(count_containing(w, "coincides"), 1);
 }
 
+// radiosity/patio-radio_37.pov: columns stand in paving slabs on the ground plane. Their
+// bottoms coincide, but they face into the plane's opaque matter, where no ray goes; and the
+// slabs' long thin sides are cut finely enough that lumen makes no slivers of its own.
+TEST(RadiosityMeshChecks, HiddenCoincidencesAndLongThinFacesAreNotReported) {
+    const auto w = mesh_warnings(
+        "plane { y, 0 pigment { rgb 0.5 } }\n"
+        "box { <-4, 0, -0.5>, <4, 0.0005, 0.5> pigment { rgb 0.7 } }\n"
+        "box { <-0.3, 0, -0.3>, <0.3, 1, 0.3> pigment { rgb 0.9 } }\n");
+    EXPECT_EQ(count_containing(w, "coincides"), 0);
+    EXPECT_EQ(count_containing(w, "sliver"), 0);
+    // The same boxes lifted off the plane: their bottoms are seen, and do coincide.
+    const auto lifted = mesh_warnings(
+        "box { <-4, 1, -0.5>, <4, 1.0005, 0.5> pigment { rgb 0.7 } }\n"
+        "box { <-0.3, 1, -0.3>, <0.3, 2, 0.3> pigment { rgb 0.9 } }\n");
+    EXPECT_EQ(count_containing(lifted, "coincides"), 1);
+}
+
 TEST(RadiosityMeshChecks, SliverTrianglesAreReported) {
     const auto w = mesh_warnings(
         "triangle { <-1, 0, 0>, <1, 0, 0>, <0, 0.0001, 0> pigment { rgb 0.5 } }\n"

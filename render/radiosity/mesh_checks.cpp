@@ -86,7 +86,8 @@ void report_slivers(const SceneMesh& m, std::vector<std::string>& warnings) {
                            "length); their indirect light is less reliable");
 }
 
-void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
+void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings,
+                       const HiddenSide& hidden) {
     // Each element goes into every cell its box (SceneMesh::boxes) overlaps; an element can cover another's
     // centroid only if it is listed in the centroid's cell. The cells are about the mean
     // element's size (at least 1/16 of a patch), so a crowd of small elements (a detailed
@@ -126,8 +127,10 @@ void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
             if (std::fabs(off) > plane_tol) continue;
             if (!contains(m, f, centroid[i], plane_tol)) continue;
             if (same_material(m, e, f)) continue;
-            pairs[earlier(e.object, f.object) ? std::pair(e.object, f.object)
-                                              : std::pair(f.object, e.object)] = true;
+            const auto objects = earlier(e.object, f.object) ? std::pair(e.object, f.object)
+                                                             : std::pair(f.object, e.object);
+            if (pairs.count(objects) || (hidden && hidden(centroid[i], e.normal))) continue;
+            pairs[objects] = true;
         }
     }
     std::vector<std::pair<const scene::Object*, const scene::Object*>> sorted;
@@ -152,9 +155,10 @@ void report_coincident(const SceneMesh& m, std::vector<std::string>& warnings) {
 
 }  // namespace
 
-void report_mesh_problems(const SceneMesh& mesh, std::vector<std::string>& warnings) {
+void report_mesh_problems(const SceneMesh& mesh, std::vector<std::string>& warnings,
+                          const HiddenSide& hidden) {
     report_slivers(mesh, warnings);
-    report_coincident(mesh, warnings);
+    report_coincident(mesh, warnings, hidden);
 }
 
 }  // namespace lumen::render::radiosity

@@ -2,6 +2,7 @@
 // sliver elements and coincident surfaces. Edge-sharing elements need no report: the mesh
 // welds their shared vertices, so values interpolate across the edge.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,12 @@ inline constexpr double kSliverRatio = 1000;
 // Appends one warning, with the object's source location, per object that has sliver
 // elements, and one per pair of objects whose surfaces coincide: coplanar, overlapping and
 // facing the same way (z-fighting; each point then belongs to whichever a ray happens to hit
-// first). Surfaces in contact, facing each other (a box resting on a floor), are not reported.
-void report_mesh_problems(const SceneMesh& mesh, std::vector<std::string>& warnings);
+// first). Surfaces in contact, facing each other (a box resting on a floor), are not reported,
+// nor coincident surfaces where `hidden(p, n)` says no ray reaches point p from the side of
+// its normal n (both face into opaque matter: the bottoms of a column and of the slab it
+// stands in, on the ground plane).
+using HiddenSide = std::function<bool(const glm::dvec3& p, const glm::dvec3& n)>;
+void report_mesh_problems(const SceneMesh& mesh, std::vector<std::string>& warnings,
+                          const HiddenSide& hidden = {});
 
 }  // namespace lumen::render::radiosity

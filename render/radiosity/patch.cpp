@@ -91,10 +91,22 @@ int pieces(double length, double max_edge) {
     return std::max(1, int(std::ceil(length / max_edge - 1e-9)));
 }
 
+// Pieces along a quad's long side are at most this many times as long as the quad is wide:
+// a long thin face (the 0.1-high sides of radiosity/patio-radio_37.pov's 980-long paving
+// slabs) cut only by the patch size gave elements that mesh_checks reports as slivers (over
+// 500 : 1), of lumen's own making. Half that ratio, and at most 4096 pieces.
+constexpr double kMaxAspect = 250;
+
 void subdivide_quad(const Patch& p, double max_edge, std::vector<Patch>& out) {
     const auto& v = p.vertices;
-    const int m = pieces(std::max(glm::length(v[1] - v[0]), glm::length(v[2] - v[3])), max_edge);
-    const int n = pieces(std::max(glm::length(v[3] - v[0]), glm::length(v[2] - v[1])), max_edge);
+    const double lu = std::max(glm::length(v[1] - v[0]), glm::length(v[2] - v[3]));
+    const double lw = std::max(glm::length(v[3] - v[0]), glm::length(v[2] - v[1]));
+    int m = pieces(lu, max_edge);
+    int n = pieces(lw, max_edge);
+    if (lw > 0 && lu / m > kMaxAspect * lw / n)
+        m = std::min(4096, std::max(m, pieces(lu, kMaxAspect * lw / n)));
+    if (lu > 0 && lw / n > kMaxAspect * lu / m)
+        n = std::min(4096, std::max(n, pieces(lw, kMaxAspect * lu / m)));
     auto at = [&](int i, int j) {
         const double s = double(i) / m, t = double(j) / n;
         return (1 - s) * (1 - t) * v[0] + s * (1 - t) * v[1] + s * t * v[2] + (1 - s) * t * v[3];

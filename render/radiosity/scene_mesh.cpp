@@ -255,7 +255,17 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
     }
     build_frames(mesh);
     build_grid(mesh);
-    report_mesh_problems(mesh, mesh.warnings);
+    // A side that faces into opaque matter (with the eye outside it) is seen by no ray.
+    const double probe = 1e-4 * mesh.patch_size;
+    const auto& placed = geometry.placed_objects();
+    report_mesh_problems(mesh, mesh.warnings, [&](const glm::dvec3& p, const glm::dvec3& n) {
+        const glm::dvec3 q = p + probe * n;
+        for (size_t i = 0; i < placed.size(); ++i)
+            if ((eye ? geometry.hides_inside(i, *eye) : geometry.placed_is_opaque(i)) &&
+                geometry.inside_placed(i, q))
+                return true;
+        return false;
+    });
     for (SceneMesh::ObjectElements& o : mesh.per_object) {
         std::vector<Aabb> boxes;
         for (uint32_t i : o.elements) boxes.push_back(mesh.boxes[i]);
