@@ -87,6 +87,14 @@ TEST(RadiosityMeshChecks, HiddenCoincidencesAndLongThinFacesAreNotReported) {
     EXPECT_EQ(count_containing(lifted, "coincides"), 1);
 }
 
+// clipped_by only takes surface away: the object is meshed whole, with nothing to report
+// (patio-radio_37.pov's arches are clipped at the ground).
+TEST(RadiosityMeshChecks, ClippedObjectsNeedNoWarning) {
+    const auto w = mesh_warnings(
+        "sphere { <0, 0.5, 0>, 1 clipped_by { plane { -y, 0 } } pigment { rgb 0.5 } }\n");
+    EXPECT_TRUE(w.empty()) << (w.empty() ? "" : w[0]);
+}
+
 TEST(RadiosityMeshChecks, SliverTrianglesAreReported) {
     const auto w = mesh_warnings(
         "triangle { <-1, 0, 0>, <1, 0, 0>, <0, 0.0001, 0> pigment { rgb 0.5 } }\n"

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include <tuple>
 
 #include <glm/common.hpp>
@@ -21,17 +20,14 @@ namespace {
 
 // The objects the geometry compiled (unions flattened, so each carries the transform and
 // texture it inherits) that get patches. The rest are lit where gather rays land on them
-// (point_gather.hpp): no_radiosity objects are invisible to radiosity altogether.
-std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry,
-                                                std::vector<std::string>& warnings) {
+// (point_gather.hpp): no_radiosity objects are invisible to radiosity altogether. A clipped
+// object is meshed whole: clipped_by only takes surface away, rays land only on what is left,
+// and the elements of the rest are never reached (they cost a little time, nothing else).
+std::vector<const PlacedObject*> meshed_objects(const Geometry& geometry) {
     std::vector<const PlacedObject*> out;
-    std::set<std::string> said;  // objects made in a loop share their location: say it once
     for (const PlacedObject& p : geometry.placed_objects()) {
         const scene::Object& o = *p.object;
         if (p.no_radiosity || p.csg || !meshable(o) || never_diffuse(p.texture)) continue;
-        std::string text =
-            o.loc.str() + ": warning: radiosity meshes this object without its clipped_by";
-        if (p.clipped && said.insert(text).second) warnings.push_back(std::move(text));
         out.push_back(&p);
     }
     return out;
@@ -188,7 +184,7 @@ double default_patch_size(const Aabb& bounds) {
 SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
                            const glm::dvec3& ambient_emission, const glm::dvec3* eye) {
     SceneMesh mesh;
-    const std::vector<const PlacedObject*> pieces = meshed_objects(geometry, mesh.warnings);
+    const std::vector<const PlacedObject*> pieces = meshed_objects(geometry);
 
     // Finite shapes first: their extent bounds the infinite planes.
     MeshOptions opt;
@@ -255,13 +251,15 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
     }
     build_frames(mesh);
     build_grid(mesh);
-    // A side that faces into opaque matter (with the eye outside it) is seen by no ray.
+    // A side that faces into opaque matter (with the eye outside it) is seen by no ray; a
+    // clipped object's matter may be seen through its cut.
     const double probe = 1e-4 * mesh.patch_size;
     const auto& placed = geometry.placed_objects();
     report_mesh_problems(mesh, mesh.warnings, [&](const glm::dvec3& p, const glm::dvec3& n) {
         const glm::dvec3 q = p + probe * n;
         for (size_t i = 0; i < placed.size(); ++i)
-            if ((eye ? geometry.hides_inside(i, *eye) : geometry.placed_is_opaque(i)) &&
+            if (!placed[i].clipped &&
+                (eye ? geometry.hides_inside(i, *eye) : geometry.placed_is_opaque(i)) &&
                 geometry.inside_placed(i, q))
                 return true;
         return false;
