@@ -74,17 +74,16 @@ TEST(RadiosityMeshChecks, OverlapsOfDifferentMaterialsAreReported) {
 // bottoms coincide, but they face into the plane's opaque matter, where no ray goes; and the
 // slabs' long thin sides are cut finely enough that lumen makes no slivers of its own.
 TEST(RadiosityMeshChecks, HiddenCoincidencesAndLongThinFacesAreNotReported) {
-    const auto w = mesh_warnings(
-        "plane { y, 0 pigment { rgb 0.5 } }\n"
-        "box { <-4, 0, -0.5>, <4, 0.0005, 0.5> pigment { rgb 0.7 } }\n"
-        "box { <-0.3, 0, -0.3>, <0.3, 1, 0.3> pigment { rgb 0.9 } }\n");
+    // A slab 8 long and 0.0005 high, and a column standing in it, both with their bottoms at y.
+    const std::string slab_and_column =
+        "union { box { <-4, 0, -0.5>, <4, 0.0005, 0.5> pigment { rgb 0.7 } }\n"
+        "        box { <-0.3, 0, -0.3>, <0.3, 1, 0.3> pigment { rgb 0.9 } } translate y * Y }\n";
+    const auto w = mesh_warnings("#declare Y = 0; plane { y, 0 pigment { rgb 0.5 } }\n" +
+                                 slab_and_column);
     EXPECT_EQ(count_containing(w, "coincides"), 0);
     EXPECT_EQ(count_containing(w, "sliver"), 0);
-    // The same boxes lifted off the plane: their bottoms are seen, and do coincide.
-    const auto lifted = mesh_warnings(
-        "box { <-4, 1, -0.5>, <4, 1.0005, 0.5> pigment { rgb 0.7 } }\n"
-        "box { <-0.3, 1, -0.3>, <0.3, 2, 0.3> pigment { rgb 0.9 } }\n");
-    EXPECT_EQ(count_containing(lifted, "coincides"), 1);
+    // Lifted off the plane, their bottoms are seen, and do coincide.
+    EXPECT_EQ(count_containing(mesh_warnings("#declare Y = 1;\n" + slab_and_column), "coincides"), 1);
 }
 
 // clipped_by only takes surface away: the object is meshed whole, with nothing to report
