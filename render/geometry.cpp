@@ -365,8 +365,8 @@ bool Geometry::occluded(const Ray& ray, double t_min, double t_max, Query query)
     bool found = false;
     double limit = t_max;  // -inf once found: the BVH walk then meets no further box
     impl_->for_each_candidate(ray, t_min, limit, query, [&](const Root& r) {
-        NodeHit h;
         if (found) return;
+        NodeHit h;
         const bool hit = r.kind == Root::Kind::Node
                              ? intersect_node(store, r.node, ray, t_min, t_max, true, h, true)
                              : intersect_root(store, r, ray, local, t_min, t_max, true, h);

@@ -254,15 +254,15 @@ SceneMesh build_scene_mesh(const Geometry& geometry, double patch_size,
     // A side that faces into opaque matter (with the eye outside it) is seen by no ray; a
     // clipped object's matter may be seen through its cut.
     const double probe = 1e-4 * mesh.patch_size;
-    const auto& placed = geometry.placed_objects();
+    std::vector<size_t> hiding;  // the objects whose matter no ray sees
+    for (size_t i = 0; i < geometry.placed_objects().size(); ++i)
+        if (!geometry.placed_objects()[i].clipped &&
+            (eye ? geometry.hides_inside(i, *eye) : geometry.placed_is_opaque(i)))
+            hiding.push_back(i);
     report_mesh_problems(mesh, mesh.warnings, [&](const glm::dvec3& p, const glm::dvec3& n) {
-        const glm::dvec3 q = p + probe * n;
-        for (size_t i = 0; i < placed.size(); ++i)
-            if (!placed[i].clipped &&
-                (eye ? geometry.hides_inside(i, *eye) : geometry.placed_is_opaque(i)) &&
-                geometry.inside_placed(i, q))
-                return true;
-        return false;
+        return std::any_of(hiding.begin(), hiding.end(), [&](size_t i) {
+            return geometry.inside_placed(i, p + probe * n);
+        });
     });
     for (SceneMesh::ObjectElements& o : mesh.per_object) {
         std::vector<Aabb> boxes;

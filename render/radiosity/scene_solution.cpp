@@ -187,12 +187,9 @@ std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& 
 
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
                                 const CameraModel& camera, int width, int height, int threads) {
-    // Rows in parallel, each chunk of rows marking its own list (no shared writes); the lists
-    // are or-ed after.
-    std::mutex merge_mutex;
+    // Rows in parallel; threads may mark the same side, so the marks are atomic stores.
     std::vector<char> seen(mesh.unknowns(), 0);
     parallel_for(size_t(std::max(height, 0)), threads, [&](size_t begin, size_t end) {
-        std::vector<char> mine(mesh.unknowns(), 0);
         for (size_t y = begin; y < end; ++y)
             for (int x = 0; x < width; ++x) {
                 const std::optional<Ray> sample = camera.ray(x, double(y));
@@ -208,10 +205,9 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
                 if (e < 0) continue;
                 const MeshElement& el = mesh.elements[size_t(e)];
                 const uint32_t side = seen_side(el, hit.normal, -ray.dir);
-                for (uint32_t v : el.v) mine[2 * v + side] = 1;
+                for (uint32_t v : el.v)
+                    std::atomic_ref<char>(seen[2 * v + side]).store(1, std::memory_order_relaxed);
             }
-        std::lock_guard lock(merge_mutex);
-        for (size_t u = 0; u < seen.size(); ++u) seen[u] |= mine[u];
     });
     return seen;
 }
