@@ -25,7 +25,8 @@ const std::vector<std::string> kData = {
     "slope",             // `slope { ... }` (build_pattern_kinds.cpp)
     "slope_map",         // read by its normal (build_normal.cpp)
     "mesh_camera",       // read by its camera (build_camera.cpp)
-    "tiles"};            // read by its texture (build_texture.cpp)
+    "tiles",             // read by its texture (build_texture.cpp)
+    "contained_by"};     // read by its isosurface (build_isosurface.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {

@@ -125,6 +125,7 @@ scene::ObjectPtr build_blob(ItemCursor& cur);  // build_blob.cpp
 scene::ObjectPtr build_height_field(ItemCursor& cur);  // build_height_field.cpp
 scene::ObjectPtr build_julia_fractal(ItemCursor& cur);  // build_julia_fractal.cpp
 scene::ObjectPtr build_sphere_sweep(ItemCursor& cur);  // build_sphere_sweep.cpp
+scene::ObjectPtr build_isosurface(ItemCursor& cur);  // build_isosurface.cpp
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
 bool is_unsupported_shape(const std::string& keyword);
 // Reads the object modifiers that follow a shape's own arguments. `extra` handles

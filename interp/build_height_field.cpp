@@ -104,8 +104,7 @@ scene::ObjectPtr field_object(ItemCursor& cur, SourceLoc block, const image::Pov
 std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionValue& fn) {
     const ast::Node& node = *fn.node;
     if (!node.flag || node.children.size() != 3 || !cur.ctx().eval_at) return nullptr;
-    const ast::Node& body = *node.children[2];
-    if (body.kind == ast::Kind::Block) return nullptr;
+    if (!fn.program) return nullptr;
     auto size = [&](const ast::Node& e) {
         const double v = cur.ctx().eval_at(e, 0, 0, 0);
         if (!(v + 0.5 >= 2 && v + 0.5 < image::kMaxImageSide + 1))
@@ -123,7 +122,8 @@ std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionV
     img->colours.resize(size_t(w) * size_t(h));
     for (int i = 0; i < h; ++i)
         for (int j = 0; j < w; ++j) {
-            const double v = cur.ctx().eval_at(body, double(j) / (w - 1), double(i) / (h - 1), 0);
+            const double p[3] = {double(j) / (w - 1), double(i) / (h - 1), 0};
+            const double v = fn::evaluate(*fn.program, p, cur.ctx().function_context());
             const float g = float(std::trunc(std::clamp(std::isnan(v) ? 0.0 : v, 0.0, 1.0) * 65535) / 65535);
             img->colours[size_t(i) * size_t(w) + size_t(j)] = {g, g, g, 1};
         }

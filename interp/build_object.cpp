@@ -293,6 +293,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::SphereSweep>, ItemCurs
     return build_sphere_sweep(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::Isosurface>, ItemCursor& cur) {
+    return build_isosurface(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

@@ -166,8 +166,10 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
         return true;
     }
     if (kw.kind == Item::Kind::Value && kw.value.is<std::shared_ptr<const FunctionValue>>()) {
-        pattern.kind = scene::pattern::Function{};
-        mark_unsupported(pattern, "pattern 'function'", kw.loc);
+        const FunctionValue& f = *kw.value.as<std::shared_ptr<const FunctionValue>>();
+        pattern.kind = scene::pattern::Function{f.program};
+        pattern.globals = cur.ctx().pattern_globals;
+        if (!f.program) mark_unsupported(pattern, "pattern 'function' (" + f.why_not + ")", kw.loc);
         return true;
     }
     if (kw.kind != Item::Kind::Keyword) return false;

@@ -8,6 +8,7 @@
 #include "interp/value.hpp"
 #include "base/diagnostics.hpp"
 #include "base/file_resolver.hpp"
+#include "function/vm.hpp"
 
 namespace lumen::interp {
 
@@ -31,6 +32,10 @@ struct BuildContext {
     // as in `height_field { function W, H { expr } }`); throws LumenError where it cannot.
     // Empty when no evaluator runs (tests that build hand-made items).
     std::function<double(const ast::Node& expr, double x, double y, double z)> eval_at;
+    // What compiled functions run with at parse time: the noise_generator as it stands.
+    fn::Context function_context() const {
+        return {pattern_globals ? pattern_globals->noise_generator : 2};
+    }
 };
 
 // True for block keywords that the builders turn into values. Reserved words that are not

@@ -27,7 +27,10 @@ using Field = std::variant<double, bool, glm::dvec2, glm::dvec3, std::vector<dou
 template <class K> std::vector<std::pair<const char*, Field>> fields_of(const K& k) {
     std::vector<std::pair<const char*, Field>> out;
     K::fields(k, [&](const char* name, const auto& v) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, int>) out.emplace_back(name, double(v));
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, int>) out.emplace_back(name, double(v));
+        else if constexpr (std::is_same_v<V, fn::ProgramPtr>)  // a compiled function's size
+            out.emplace_back(name, Field(v ? std::to_string(v->code.size()) + " instructions" : ""));
         else out.emplace_back(name, Field(v));
     });
     return out;

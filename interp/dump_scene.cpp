@@ -385,6 +385,23 @@ struct ShapeDumper {
         put_if(o, "smooth", h.smooth, false);
         put_if(o, "hierarchy", h.hierarchy, true);
     }
+    void operator()(const scene::Isosurface& s) const {
+        o.put("type", Json::str("isosurface"));
+        o.put("instructions", Json::num(s.function ? double(s.function->code.size()) : 0));
+        if (s.sphere) {
+            o.put("sphere_center", vec(s.center));
+            o.put("sphere_radius", Json::num(s.radius));
+        } else {
+            o.put("box_lo", vec(s.lo));
+            o.put("box_hi", vec(s.hi));
+        }
+        o.put("threshold", Json::num(s.threshold));
+        o.put("accuracy", Json::num(s.accuracy));
+        o.put("max_gradient", Json::num(s.max_gradient));
+        if (s.evaluate) o.put("evaluate", vec(*s.evaluate));
+        put_if(o, "open", s.open, false);
+        o.put("max_trace", Json::num(s.max_trace));
+    }
     void operator()(const scene::SphereSweep& s) const {
         static const char* splines[] = {"linear_spline", "b_spline", "cubic_spline"};
         o.put("type", Json::str("sphere_sweep"));

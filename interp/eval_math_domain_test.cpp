@@ -91,7 +91,7 @@ TEST_F(MathDomainTest, SilentInfinityOrNanGetsAWarning) {
     EXPECT_EQ(messages.size(), 1u);
 }
 
-// In a function body (POV's function VM) nothing is checked: IEEE results, with lumen's warning.
+// In a function body (POV's function VM) nothing is checked or reported: IEEE results.
 TEST_F(MathDomainTest, FunctionBodiesFollowPovRaysVirtualMachine) {
     run("#declare F = function(a) { sqrt(a) }\n"
         "#declare G = function(a) { -1 / a }\n"
@@ -101,8 +101,7 @@ TEST_F(MathDomainTest, FunctionBodiesFollowPovRaysVirtualMachine) {
     EXPECT_EQ(number("G(0)"), -HUGE_VAL);
     EXPECT_TRUE(std::isnan(number("H(2)")));
     EXPECT_EQ(number("L(0)"), -HUGE_VAL);
-    EXPECT_EQ(messages.size(), 4u);
-    for (const Diagnostic& d : messages) EXPECT_EQ(d.severity, Severity::Warning) << d.message;
+    EXPECT_TRUE(messages.empty());
 }
 
 }  // namespace

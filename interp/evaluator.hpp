@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "function/vm.hpp"
 #include "interp/budget.hpp"
 #include "interp/builders.hpp"
 #include "interp/interpret.hpp"
@@ -106,6 +107,10 @@ public:
     Value call_macro_value(const ast::Node& macro, const ast::Node& call);
     // A user-defined function called in an expression (user_functions.cpp).
     Value call_function(const FunctionValue& fn, const ast::Node& call);
+    // A `function { }` block's body compiled (compile_function.cpp); located errors.
+    fn::ProgramPtr compile_function(const ast::Node& block);
+    // The context compiled functions run in at parse time (the current noise_generator).
+    fn::Context function_context() const;
     // `expr` evaluated as a function body with x, y, z bound (BuildContext::eval_at).
     double eval_at(const ast::Node& expr, double x, double y, double z);
     // The Macro node a name refers to, or null.

@@ -149,8 +149,19 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
 
 Value Evaluator::eval_block(const ast::Node& block) {
     const std::string& kw = block.text;
-    if (kw == "function" || kw == "spline" || !block.params.empty())
-        return Value{std::make_shared<const FunctionValue>(FunctionValue{&block, kw}), block.loc};
+    if (kw == "function" || kw == "spline" || !block.params.empty()) {
+        FunctionValue f{&block, kw, nullptr, {}};
+        if (kw != "function") {
+            f.why_not = kw + " functions are not supported";
+        } else if (block.children.empty()) {
+            throw LumenError(block.loc, "a function needs a body");
+        } else if (const ast::Node& body = *block.children.back(); body.kind == ast::Kind::Block) {
+            f.why_not = "'" + body.text + "' functions are not supported";
+        } else {
+            f.program = compile_function(block);
+        }
+        return Value{std::make_shared<const FunctionValue>(std::move(f)), block.loc};
+    }
     if (!is_supported_block(kw)) {
         if (parser::is_reserved_word(kw)) return Value{scene::Unsupported{kw, block.loc}, block.loc};
         throw LumenError(block.loc, "unknown keyword '" + kw + "'",

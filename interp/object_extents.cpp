@@ -269,6 +269,11 @@ struct ShapeBoxes {
         const double r = j.bound_radius();
         return {{glm::dvec3(-r), glm::dvec3(r)}};
     }
+    // POV-Ray's box: the container's (a sphere's cube).
+    ShapeBox operator()(const scene::Isosurface& s) const {
+        if (s.sphere) return {{s.center - glm::dvec3(s.radius), s.center + glm::dvec3(s.radius)}};
+        return {{s.lo, s.hi}};
+    }
     ShapeBox operator()(const scene::SphereSweep& s) const {
         Extents e;
         s.control_box(e.min, e.max);

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "function/program.hpp"
 #include "parser/ast.hpp"
 #include "scene/scene.hpp"
 
@@ -115,6 +116,8 @@ struct MacroValue {
 struct FunctionValue {
     const ast::Node* node = nullptr;  // the `function`/`spline` Block node
     std::string keyword;
+    fn::ProgramPtr program;  // compiled where declared; null for the forms lumen cannot run
+    std::string why_not;     // then: the feature, for the error where it is used
 };
 
 }  // namespace lumen::interp

@@ -17,6 +17,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "function/program.hpp"
+
 namespace lumen::scene {
 
 struct Pigment;  // scene/texture.hpp
@@ -193,7 +195,11 @@ struct Facets : Arguments {
         f("metric", s.metric);
     }
 };
-struct Function : Arguments {};  // function { } pattern
+// `function { ... }` as a pattern: the compiled function at the pattern point.
+struct Function {
+    fn::ProgramPtr program;
+    template <class Self, class F> static void fields(Self& s, F&& f) { f("program", s.program); }
+};
 // `pigment_pattern { pigment }`: the pigment's grey value.
 struct PigmentPattern : NoFields {
     std::shared_ptr<const Pigment> pigment;
@@ -268,7 +274,7 @@ struct DensityFile {
     X(Spiral2, "spiral2", 0, grey_ramp, true)                   \
     X(Tiling, "tiling", 0, grey_ramp, true)                     \
     X(Facets, "facets", 0, grey_ramp, false)                    \
-    X(Function, "function", 0, grey_ramp, false)                \
+    X(Function, "function", 0, grey_ramp, true)                 \
     X(PigmentPattern, "pigment_pattern", 0, grey_ramp, true)    \
     X(Object, "object", 2, checker, true)                       \
     X(DensityFile, "density_file", 0, grey_ramp, true)

@@ -35,7 +35,8 @@
     X(Ovus, "ovus")                            \
     X(HeightField, "height_field")             \
     X(JuliaFractal, "julia_fractal")           \
-    X(SphereSweep, "sphere_sweep")
+    X(SphereSweep, "sphere_sweep")             \
+    X(Isosurface, "isosurface")
 
 namespace lumen::scene {
 
@@ -61,7 +62,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "isosurface", "lemon", "light_group", "parametric"};
+    "lemon", "light_group", "parametric"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

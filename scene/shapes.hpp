@@ -13,6 +13,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "function/program.hpp"
+#include "scene/pattern.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
 
@@ -281,6 +283,26 @@ struct JuliaFractal {
         const double r = bound_radius();
         return algebra == JuliaAlgebra::Hypercomplex ? 16 : r * r + 1e-7;
     }
+};
+
+// isosurface { function { F } [contained_by { box {C1, C2} | sphere {C, R} }] [threshold T]
+// [accuracy A] [max_gradient G] [evaluate P0, P1, P2] [open] [max_trace N | all_intersections] }:
+// the surface F = T inside the container (render/shapes/isosurface.hpp), F compiled.
+struct Isosurface {
+    fn::ProgramPtr function;
+    bool sphere = false;                 // the container: a sphere, else a box
+    glm::dvec3 lo{-1}, hi{1};            // the box, sorted per axis
+    glm::dvec3 center{0};                // the sphere
+    double radius = 1;
+    double threshold = 0, accuracy = 0.001, max_gradient = 1.1;
+    std::optional<glm::dvec3> evaluate;  // P0, P1, P2
+    bool open = false;
+    int max_trace = 1;                   // 1..10; all_intersections is 10
+    std::shared_ptr<const PatternGlobals> globals;  // the scene's noise_generator
+    LUMEN_FIELDS(f("function", s.function), f("sphere", s.sphere), f("lo", s.lo), f("hi", s.hi),
+                 f("center", s.center), f("radius", s.radius), f("threshold", s.threshold),
+                 f("accuracy", s.accuracy), f("max_gradient", s.max_gradient),
+                 f("evaluate", s.evaluate), f("open", s.open), f("max_trace", s.max_trace))
 };
 
 // sphere_sweep { linear_spline | b_spline | cubic_spline N, <c1>, r1, ... [tolerance T] }:

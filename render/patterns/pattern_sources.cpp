@@ -1,10 +1,12 @@
 #include "render/patterns/pattern_sources.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
 
+#include "function/vm.hpp"
 #include "render/node.hpp"
 #include "render/pigment.hpp"
 #include "scene/object.hpp"
@@ -102,6 +104,18 @@ double evaluate(const scene::pattern::Object& k, const glm::dvec3& p) {
         c.source = k.object;
     }
     return inside_node(c.store, c.root, p) ? 1.0 : 0.0;
+}
+
+// The function at the pattern point; POV-Ray keeps a value above 1 only as its fraction (1
+// stays 1), and the pattern pipeline goes on from there (frequency, wrapping, wave).
+double evaluate(const scene::pattern::Function& k, const glm::dvec3& p,
+                const scene::Pattern& pattern) {
+    if (!k.program) return 0;
+    const double args[3] = {p.x, p.y, p.z};
+    fn::Context context;
+    if (pattern.globals) context.noise_generator = pattern.globals->noise_generator;
+    const double v = fn::evaluate(*k.program, args, context);
+    return v > 1 ? std::fmod(v, 1.0) : v;
 }
 
 }  // namespace lumen::render

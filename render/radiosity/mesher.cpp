@@ -292,6 +292,7 @@ struct ShapeMesher {
     NotMeshed operator()(const scene::Superellipsoid&) const { return {}; }
     NotMeshed operator()(const scene::Blob&) const { return {}; }
     NotMeshed operator()(const scene::Ovus&) const { return {}; }
+    NotMeshed operator()(const scene::Isosurface&) const { return {}; }
     // Height fields are not meshed yet: they only occlude.
     NotMeshed operator()(const scene::HeightField&) const { return {}; }
     NotMeshed operator()(const scene::JuliaFractal&) const { return {}; }

@@ -1,0 +1,69 @@
+// A compiled `function { ... }`: plain data, made once where the function is declared (the
+// interpreter's compile_function.cpp) with every captured identifier folded in, and run by
+// vm.hpp from the interpreter (`F(1, 2, 3)`) and from every render thread (isosurfaces,
+// function patterns) alike. It sits below both, as noise/ does.
+//
+// The code is a stack machine: each instruction pops its operands and pushes its result.
+// POV-Ray's function language has no assignments; the only local is the counter of
+// sum()/prod(), kept in a numbered slot.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lumen::fn {
+
+enum class Op : uint8_t {
+    Const,      // push consts[a]
+    Arg,        // push args[a]
+    Local,      // push locals[a]
+    SetLocal,   // locals[a] = pop
+    Add, Sub, Mul, Div, Neg,
+    Lt, Le, Eq, Ne, Ge, Gt,  // 1 or 0; exact (no SDL tolerance); NaN: Ne, Gt, Ge give 1
+    And, Or,                 // (a != 0) and/or (b != 0)
+    Math1,      // push math1(a, pop): sin, cos, ... (Math1 below)
+    Math2,      // b = pop, a = pop: push math2(a, b)
+    Min, Max,   // pop 2, push POV's min/max (see vm.cpp)
+    Jump,       // pc = a
+    JumpIfNotNeg,   // pop v: unless v < 0, pc = a  (select's first test; NaN jumps)
+    JumpIfNotZero,  // pop v: unless v == 0, pc = a
+    JumpIfGreater,  // pop b, pop a: if !(a <= b), pc = a_target (the sum/prod loop test)
+    Internal,   // pop b arguments (x, y, z, then parameters), push internal function a
+    Call,       // pop b arguments, push callees[a]'s result (component c for vectors)
+};
+
+// Math1's functions, in POV-Ray's order of its allowed one-argument calls.
+enum class Math1 : uint8_t {
+    Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Asinh, Acosh, Atanh, Abs, Floor, Ceil,
+    Sqrt, Exp, Ln, Log, Int, Radians, Degrees
+};
+enum class Math2 : uint8_t { Atan2, Pow, Mod, Div };
+
+struct Instr {
+    Op op;
+    uint8_t c = 0;   // Call: the component of a vector result
+    uint16_t b = 0;  // argument count (Internal, Call)
+    uint32_t a = 0;  // operand: constant, argument, local, jump target, function number
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("op", s.op), f("c", s.c), f("b", s.b), f("a", s.a);
+    }
+};
+
+struct Program {
+    std::vector<Instr> code;
+    std::vector<double> consts;
+    int params = 3;     // arguments expected (x, y, z when the function names none)
+    int locals = 0;     // sum/prod counters and limits
+    int max_stack = 0;  // the deepest the stack gets (checked by the VM's fixed stack)
+    int components = 1; // results (1: a float function)
+    std::vector<std::shared_ptr<const Program>> callees;  // functions it calls, as they were
+    std::string name;   // for messages ("" when anonymous)
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("code", s.code), f("consts", s.consts), f("params", s.params), f("callees", s.callees);
+    }
+};
+
+using ProgramPtr = std::shared_ptr<const Program>;
+
+}  // namespace lumen::fn

@@ -1,0 +1,26 @@
+// Runs a compiled function (program.hpp). Safe from any number of threads at once: the
+// program is read-only and a call keeps its stack in a fixed array on the C++ stack, so no
+// call allocates or locks.
+#pragma once
+#include <span>
+
+#include "function/program.hpp"
+
+namespace lumen::fn {
+
+// What a run may depend on besides its arguments.
+struct Context {
+    int noise_generator = 2;  // the scene's global_settings noise_generator (f_noise3d)
+};
+
+// The deepest chain of calls between compiled functions (POV-Ray's own limit is 1024).
+inline constexpr int kMaxCallDepth = 1024;
+// The deepest stack one program may need (the compiler refuses deeper expressions).
+inline constexpr int kMaxStack = 256;
+
+// The function's value at `args` (program.params of them; the compiler checks counts). For a
+// vector function, component `component`.
+double evaluate(const Program& program, std::span<const double> args, const Context& context = {},
+                int component = 0);
+
+}  // namespace lumen::fn

@@ -1,0 +1,101 @@
+// isosurface { function { F } [contained_by { box { C1, C2 } | sphere { C, R } }] [threshold T]
+// [accuracy A] [max_gradient G] [evaluate P0, P1, P2] [open] [max_trace N] [all_intersections]
+// OBJECT_MODIFIERS }, read as POV-Ray 3.7 reads it: the function first, a box container by
+// default (-1 to 1), box corners sorted, accuracy and max_gradient at or below 0 warned about
+// and set back to their defaults, max_trace kept within 1..10.
+#include <algorithm>
+#include <cmath>
+
+#include "interp/build_common.hpp"
+
+namespace lumen::interp {
+
+namespace {
+
+// contained_by { box { C1, C2 } } or { sphere { C, R } }: a plain box or sphere, untransformed.
+void read_container(ItemCursor& cur, const BlockValue& block, scene::Isosurface& iso) {
+    ItemCursor sub(cur.ctx(), block);
+    const SourceLoc loc = sub.next_loc();
+    const scene::ObjectPtr& o = sub.expect<scene::ObjectPtr>("contained_by", "a box or a sphere");
+    if (!o->transform.is_identity())
+        cur.fail(loc, "a contained_by box or sphere cannot be transformed: transform the isosurface");
+    if (const auto* b = std::get_if<scene::Box>(&o->shape)) {
+        iso.sphere = false;
+        iso.lo = glm::min(b->min, b->max);
+        iso.hi = glm::max(b->min, b->max);
+    } else if (const auto* s = std::get_if<scene::Sphere>(&o->shape)) {
+        iso.sphere = true;
+        iso.center = s->center;
+        iso.radius = s->radius;
+    } else {
+        cur.fail(loc, "contained_by takes a box or a sphere");
+    }
+    if (!sub.at_end()) sub.fail_expected("the end of contained_by", "");
+}
+
+double positive_or_default(ItemCursor& cur, const Item& kw, double fallback) {
+    const double v = cur.expect_float(kw.keyword);
+    if (v > 0) return v;
+    cur.warn(kw.loc, "an isosurface's " + kw.keyword + " must be above 0: using " +
+                         (fallback == 0.001 ? std::string("0.001") : std::string("1.1")));
+    return fallback;
+}
+
+}  // namespace
+
+scene::ObjectPtr build_isosurface(ItemCursor& cur) {
+    const SourceLoc loc = cur.next_loc();
+    if (!cur.next_is<std::shared_ptr<const FunctionValue>>())
+        cur.fail(loc, "an isosurface starts with its function { ... }");
+    const FunctionValue& f = *cur.next().value.as<std::shared_ptr<const FunctionValue>>();
+    if (!f.program) return unsupported_object({"isosurface of a " + f.why_not.substr(0, f.why_not.find(" functions")) + " function", loc});
+    if (f.program->params != 3)
+        cur.fail(loc, "an isosurface's function takes x, y and z, not " +
+                          std::to_string(f.program->params) + " parameters");
+    scene::Isosurface iso;
+    iso.function = f.program;
+    iso.globals = cur.ctx().pattern_globals;
+    static const std::vector<std::string> kWords = {
+        "contained_by", "threshold", "accuracy", "max_gradient", "evaluate", "open",
+        "max_trace", "all_intersections"};
+    auto extra = [&](const Item& item) {
+        if (const BlockValue* b = block_of(item, "contained_by")) {
+            read_container(cur, *b, iso);
+            return true;
+        }
+        if (item.kind != Item::Kind::Keyword) return false;
+        const std::string& w = item.keyword;
+        if (w == "threshold") {
+            iso.threshold = cur.expect_float(w);
+        } else if (w == "accuracy") {
+            iso.accuracy = positive_or_default(cur, item, 0.001);
+        } else if (w == "max_gradient") {
+            iso.max_gradient = positive_or_default(cur, item, 1.1);
+        } else if (w == "evaluate") {
+            glm::dvec3 e;
+            for (int i = 0; i < 3; ++i) e[i] = cur.expect_float(w);
+            iso.evaluate = e;
+        } else if (w == "open") {
+            iso.open = cur.optional_bool();
+        } else if (w == "max_trace") {
+            const SourceLoc at = cur.next_loc();
+            const double n = cur.expect_float(w);
+            if (n < 1 || n > 10) cur.warn(at, "an isosurface's max_trace is kept within 1 to 10");
+            iso.max_trace = int(std::clamp(std::isnan(n) ? 1.0 : n, 1.0, 10.0));
+        } else if (w == "all_intersections") {
+            iso.max_trace = 10;
+        } else {
+            return false;
+        }
+        return true;
+    };
+    scene::Object obj;
+    obj.loc = cur.block_loc();
+    read_object_modifiers(cur, obj, extra, kWords);
+    if (!(iso.sphere ? iso.radius > 0 : iso.lo.x < iso.hi.x && iso.lo.y < iso.hi.y && iso.lo.z < iso.hi.z))
+        cur.warn(cur.block_loc(), "the isosurface's container is empty: nothing is drawn");
+    obj.shape = std::move(iso);
+    return std::make_shared<scene::Object>(std::move(obj));
+}
+
+}  // namespace lumen::interp

@@ -1,0 +1,220 @@
+#include "render/shapes/isosurface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace lumen::render {
+
+namespace {
+
+constexpr double kFar = 2e10;  // POV-Ray's largest depth along a ray
+
+// One ray's search: the function along the ray and the gradient bound in use.
+struct Search {
+    const IsosurfaceShape& s;
+    const LocalRay& r;
+    double len;       // |d|
+    double g;         // max_gradient (raised by `evaluate`)
+    double sign = 1;  // +1: looking for V < 0 (entering); -1: for V > 0
+
+    double V(double t) const {
+        const glm::dvec3 p = r.at(t);
+        const double a[3] = {p.x, p.y, p.z};
+        return fn::evaluate(*s.iso.function, a, s.context) - s.iso.threshold;
+    }
+    double f(double t) const { return sign * V(t); }
+
+    // POV's recursive bisection: an interval is split while the ends' values and the gradient
+    // bound allow a root inside; the depth is the far end of the first leaf (narrower than the
+    // accuracy) whose end value is negative.
+    bool bisect(double ta, double fa, double tb, double fb, double dt, double w, double inv,
+                double& root) {
+        if (s.iso.evaluate) {
+            const glm::dvec3 e = *s.iso.evaluate;
+            const double found = std::fabs(fb - fa) * inv;
+            if (g < found * e.y) {
+                g = found * e.y * e.y;
+                dt = g * len * w;
+            }
+        }
+        if (w < s.iso.accuracy) {
+            if (fb < 0) {
+                root = tb;
+                return true;
+            }
+            return false;
+        }
+        if (fa + fb - dt < 0) {
+            w /= 2;
+            dt /= 2;
+            const double tm = ta + w, fm = f(tm);
+            return bisect(ta, fa, tm, fm, dt, w, 2 * inv, root) ||
+                   bisect(tm, fm, tb, fb, dt, w, 2 * inv, root);
+        }
+        return false;
+    }
+
+    bool find_root(double t1, double t2, double& root) {
+        double f1 = f(t1);
+        if (s.iso.open && f1 < 0) {  // an open surface looks for the exit instead
+            sign = -sign;
+            f1 = -f1;
+        }
+        const double f2 = f(t2);
+        if (s.iso.evaluate && g > s.iso.evaluate->x) g *= s.iso.evaluate->z;
+        const double w = t2 - t1;
+        return bisect(t1, f1, t2, f2, g * len * w, w, 1 / (len * w), root);
+    }
+};
+
+// The ray's span in the container and the outward normals where it enters and leaves.
+bool container(const scene::Isosurface& iso, const LocalRay& r, double len, double& t1,
+               double& t2, glm::dvec3& n1, glm::dvec3& n2) {
+    if (iso.sphere) {
+        const glm::dvec3 d = r.d / len, oc = r.o - iso.center;
+        const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - iso.radius * iso.radius;
+        const double disc = b * b - c;
+        if (!(disc >= 0)) return false;
+        const double q = std::sqrt(disc);
+        t1 = (-b - q) / len;
+        t2 = (-b + q) / len;
+        n1 = glm::normalize(r.at(t1) - iso.center);
+        n2 = glm::normalize(r.at(t2) - iso.center);
+        if (t2 < 1e-6) return false;
+        return true;
+    }
+    t1 = 0;
+    t2 = kFar;
+    n1 = n2 = glm::dvec3(0);
+    for (int a = 0; a < 3; ++a) {
+        if (r.d[a] == 0) {
+            if (r.o[a] < iso.lo[a] || r.o[a] > iso.hi[a]) return false;
+            continue;
+        }
+        double ta = (iso.lo[a] - r.o[a]) / r.d[a], tb = (iso.hi[a] - r.o[a]) / r.d[a];
+        glm::dvec3 na(0), nb(0);
+        na[a] = -1;
+        nb[a] = 1;
+        if (ta > tb) std::swap(ta, tb), std::swap(na, nb);
+        if (ta > t1) t1 = ta, n1 = na;
+        if (tb < t2) t2 = tb, n2 = nb;
+        if (t1 > t2) return false;
+    }
+    return t2 >= 1e-6;
+}
+
+glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
+    const scene::Isosurface& iso = s.iso;
+    if (iso.sphere && std::fabs(glm::length(p - iso.center) - iso.radius) < 1e-10)
+        return glm::normalize(p - iso.center);
+    auto F = [&](const glm::dvec3& q) {
+        const double a[3] = {q.x, q.y, q.z};
+        return fn::evaluate(*iso.function, a, s.context);
+    };
+    const double f0 = F(p), A = iso.accuracy;
+    const glm::dvec3 n(F(p + glm::dvec3(A, 0, 0)) - f0, F(p + glm::dvec3(0, A, 0)) - f0,
+                       F(p + glm::dvec3(0, 0, A)) - f0);
+    if (n == glm::dvec3(0)) return {1, 0, 0};
+    const glm::dvec3 u = glm::normalize(n);
+    return std::isfinite(u.x + u.y + u.z) ? u : glm::dvec3(1, 0, 0);
+}
+
+}  // namespace
+
+IsosurfaceShape make_isosurface(const scene::Isosurface& s) {
+    IsosurfaceShape out;
+    out.iso = s;
+    if (s.globals) out.context.noise_generator = s.globals->noise_generator;
+    out.valid = bool(s.function) && s.function->params == 3;
+    return out;
+}
+
+int isosurface_hits(const IsosurfaceShape& s, const LocalRay& r, IsoHit* hits) {
+    if (!s.valid) return 0;
+    const scene::Isosurface& iso = s.iso;
+    const double len = glm::length(r.d);
+    if (!(len > 0)) return 0;
+    double t1, t2;
+    glm::dvec3 n1, n2;
+    if (!container(iso, r, len, t1, t2, n1, n2)) return 0;
+    t1 = std::max(t1, 0.0);
+    const double A = iso.accuracy;
+    Search search{s, r, len, iso.max_gradient};
+    int n = 0, count = 0;
+    auto record = [&](double t, const glm::dvec3& normal) {
+        if (count < kMaxIsoHits) hits[count++] = {t, normal};
+    };
+    if (!iso.open) {
+        const double v0 = search.V(t1);
+        if (t1 > A) {  // the ray enters the container: inside the solid there, a cut face
+            if (v0 < 0) {
+                record(t1, n1);
+                n = 1;
+                search.sign = -1;
+            }
+        } else {  // it starts inside the container
+            if (v0 < 4 * search.g * A) {
+                t1 = 5 * A;
+                if (search.V(t1) < 0) search.sign = -1;
+            }
+            if (search.V(t2) < 0) record(t2, n2);
+        }
+    }
+    t2 = std::min(t2, kFar);
+    t1 = std::min(t1, t2);
+    if (t2 - t1 < A) {
+        if (count > 0) --count;
+        return count;
+    }
+    if (t1 < A && search.sign > 0 && std::fabs(search.V(t1)) < 4 * search.g * A) {
+        t1 = 5 * A;
+        if (search.V(t1) < 0) search.sign = -1;
+    }
+    while (n < iso.max_trace) {
+        double root;
+        if (!search.find_root(t1, t2, root)) break;
+        record(root, function_normal(s, r.at(root)));
+        t1 = root + 5 * A;
+        if (t2 - t1 < A) break;
+        search.sign = -search.sign;
+        ++n;
+    }
+    std::sort(hits, hits + count, [](const IsoHit& a, const IsoHit& b) { return a.t < b.t; });
+    return count;
+}
+
+bool intersect(const IsosurfaceShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
+    IsoHit hits[kMaxIsoHits];
+    const int count = isosurface_hits(s, r, hits);
+    for (int i = 0; i < count; ++i)
+        if (hits[i].t > tmin && hits[i].t < tmax) {
+            h.t = hits[i].t;
+            h.normal = hits[i].normal;
+            return true;
+        }
+    return false;
+}
+
+bool inside(const IsosurfaceShape& s, const glm::dvec3& p) {
+    if (!s.valid) return false;
+    const scene::Isosurface& iso = s.iso;
+    if (iso.sphere) {
+        const glm::dvec3 d = p - iso.center;
+        if (glm::dot(d, d) > iso.radius * iso.radius) return false;
+    } else if (p.x < iso.lo.x || p.y < iso.lo.y || p.z < iso.lo.z || p.x > iso.hi.x ||
+               p.y > iso.hi.y || p.z > iso.hi.z) {
+        return false;
+    }
+    const double a[3] = {p.x, p.y, p.z};
+    return fn::evaluate(*iso.function, a, s.context) <= iso.threshold;
+}
+
+Aabb bounds(const IsosurfaceShape& s) {
+    const scene::Isosurface& iso = s.iso;
+    if (iso.sphere) return {iso.center - glm::dvec3(iso.radius), iso.center + glm::dvec3(iso.radius)};
+    return {iso.lo, iso.hi};
+}
+
+}  // namespace lumen::render
