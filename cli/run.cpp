@@ -22,6 +22,7 @@
 #include "base/warning_log.hpp"
 #include "render/frame.hpp"
 #include "render/image_output.hpp"
+#include "render/function_host.hpp"
 #include "render/object_queries.hpp"
 
 namespace lumen::cli {
@@ -93,6 +94,7 @@ int run_frames(const Options& o, SourceManager& sources) {
         const auto start = Clock::now();
         interp::InterpOptions scene_options = frame.scene;
         scene_options.object_queries = object_queries;  // trace() and inside()
+        scene_options.function_host = render::shared_function_host();  // pigment functions
         scene::Scene scene = interp::interpret_file(sources, o.input, scene_options, warn);
         warnings.flush();
         apply_radiosity_switch(scene, o.radiosity);

@@ -31,6 +31,26 @@ enum class Op : uint8_t {
     JumpIfGreater,  // pop b, pop a: if !(a <= b), pc = a_target (the sum/prod loop test)
     Internal,   // pop b arguments (x, y, z, then parameters), push internal function a
     Call,       // pop b arguments, push callees[a]'s result (component c for vectors)
+    External,   // pop x, y, z: push member c of externals[a] there (Host)
+    Transform,  // pop x, y, z: push member c of the 3 x 4 matrix at consts[a..a+11] times them
+};
+
+// Members of a vector result: 0..4 the components (x/red .. transmit), then these.
+inline constexpr uint8_t kMemberGray = 5;  // 0.297 c0 + 0.589 c1 + 0.114 c2
+inline constexpr uint8_t kMemberHf = 6;    // (c0 + c1 / 255) x 0.996093
+inline constexpr uint8_t kMemberAsked = 255;  // the component the caller asks for
+
+// What the VM cannot evaluate by itself: a pigment function's colour or a pattern function's
+// value, computed by the Host the run is given (the renderer's). The payload is the scene's
+// pigment (a pattern function's pattern is that pigment's), owned here and typed by the host.
+struct External {
+    enum class Kind : uint8_t { Pigment, Pattern };
+    Kind kind = Kind::Pigment;
+    std::shared_ptr<const void> payload;
+    uint64_t content = 0;  // the payload's content hash, so that programs hash by content
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("kind", s.kind), f("content", s.content);
+    }
 };
 
 // Math1's functions, in POV-Ray's order of its allowed one-argument calls.
@@ -58,9 +78,11 @@ struct Program {
     int max_stack = 0;  // the deepest the stack gets (checked by the VM's fixed stack)
     int components = 1; // results (1: a float function)
     std::vector<std::shared_ptr<const Program>> callees;  // functions it calls, as they were
-    std::string name;   // for messages ("" when anonymous)
+    std::vector<External> externals;
+    bool needs_host = false;  // it or a callee has externals
     template <class Self, class F> static void fields(Self& s, F&& f) {
-        f("code", s.code), f("consts", s.consts), f("params", s.params), f("callees", s.callees);
+        f("code", s.code), f("consts", s.consts), f("params", s.params), f("callees", s.callees),
+            f("externals", s.externals);
     }
 };
 

@@ -50,6 +50,13 @@ double math2(Math2 f, double a, double b) {
 double run(const Program& p, const double* args, const Context& context, int component,
            int depth);
 
+// Member m of a vector result (program.hpp's numbering).
+double member(const double* c, int m) {
+    if (m == kMemberGray) return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+    if (m == kMemberHf) return (c[0] + c[1] / 255) * 0.996093;
+    return m >= 0 && m < 5 ? c[m] : 0;
+}
+
 // POV's min and max keep the new argument unless it is "not smaller" / "not larger" than the
 // running value: min(NaN, 5) = 5 but min(5, NaN) = NaN.
 double pov_min(double running, double next) { return next < running ? next : (running <= next ? running : next); }
@@ -99,6 +106,24 @@ double run(const Program& p, const double* args, const Context& context, int com
                 stack[sp] = internal(int(in.a), stack + sp, context.noise_generator);
                 ++sp;
                 break;
+            case Op::External: {
+                sp -= 3;
+                double out[5] = {0, 0, 0, 0, 0};
+                if (context.host) context.host->evaluate(p.externals[in.a], stack + sp, out);
+                else out[0] = out[1] = out[2] = out[3] = out[4] = std::nan("");
+                stack[sp++] = member(out, in.c == kMemberAsked ? component : in.c);
+                break;
+            }
+            case Op::Transform: {
+                sp -= 3;
+                const double* m = p.consts.data() + in.a;
+                const double* v = stack + sp;
+                double out[3];
+                for (int r = 0; r < 3; ++r) out[r] = m[4 * r] * v[0] + m[4 * r + 1] * v[1] + m[4 * r + 2] * v[2] + m[4 * r + 3];
+                const int c = in.c == kMemberAsked ? component : in.c;
+                stack[sp++] = c < 3 ? out[c] : 0;
+                break;
+            }
             case Op::Call: {
                 sp -= in.b;
                 const Program& callee = *p.callees[in.a];
@@ -112,7 +137,6 @@ double run(const Program& p, const double* args, const Context& context, int com
             }
         }
     }
-    (void)component;
     return sp > 0 ? stack[sp - 1] : 0;
 }
 

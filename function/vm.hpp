@@ -8,9 +8,19 @@
 
 namespace lumen::fn {
 
+// Evaluates externals (program.hpp): the renderer implements it; the interpreter is handed one.
+class Host {
+public:
+    virtual ~Host() = default;
+    // The external's components at (x, y, z): 5 for a pigment (r, g, b, f, t, as floats
+    // give them), 1 for a pattern.
+    virtual void evaluate(const External& e, const double* xyz, double* out) const = 0;
+};
+
 // What a run may depend on besides its arguments.
 struct Context {
-    int noise_generator = 2;  // the scene's global_settings noise_generator (f_noise3d)
+    int noise_generator = 2;     // the scene's global_settings noise_generator (f_noise3d)
+    const Host* host = nullptr;  // needed by programs with needs_host; else externals are NaN
 };
 
 // The deepest chain of calls between compiled functions (POV-Ray's own limit is 1024).

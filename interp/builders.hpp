@@ -34,8 +34,9 @@ struct BuildContext {
     std::function<double(const ast::Node& expr, double x, double y, double z)> eval_at;
     // What compiled functions run with at parse time: the noise_generator as it stands.
     fn::Context function_context() const {
-        return {pattern_globals ? pattern_globals->noise_generator : 2};
+        return {pattern_globals ? pattern_globals->noise_generator : 2, function_host};
     }
+    const fn::Host* function_host = nullptr;  // InterpOptions::function_host
 };
 
 // True for block keywords that the builders turn into values. Reserved words that are not

@@ -9,6 +9,7 @@
 #include "function/internal.hpp"
 #include "function/vm.hpp"
 #include "interp/evaluator.hpp"
+#include "scene/content_hash.hpp"
 
 namespace lumen::interp {
 
@@ -128,8 +129,7 @@ private:
             case Kind::Call: return call(e);
             case Kind::Ternary:
                 fail(e.loc, "'? :' is not available in functions (use select())");
-            case Kind::Member:
-                fail(e.loc, "members of vector functions are not supported in functions yet");
+            case Kind::Member: return member(e);
             default:
                 fail(e.loc, std::string("a function body cannot contain ") + ast::kind_name(e.kind));
         }
@@ -297,18 +297,49 @@ private:
         if (n == "internal") fail(e.loc, "internal() must be a function's whole body");
         if (const Value* v = ev_.symbols.find(n); v && v->is<std::shared_ptr<const FunctionValue>>()) {
             const FunctionValue& f = *v->as<std::shared_ptr<const FunctionValue>>();
-            if (!f.program)
-                fail(e.loc, "cannot call '" + n + "' in a function: " + f.why_not);
-            if (int(argc) != f.program->params)
-                fail(e.loc, "function '" + n + "' takes " + std::to_string(f.program->params) +
-                                " argument(s), found " + std::to_string(argc));
-            for (const auto& a : e.children) expr(*a);
-            p_.callees.push_back(f.program);
-            return emit({Op::Call, 0, uint16_t(argc), uint32_t(p_.callees.size() - 1)},
-                        1 - int(argc));
+            if (f.program && f.program->components > 1)
+                fail(e.loc, "'" + n + "' is a vector function: take one member of its result, "
+                            "e.g. " + n + "(...).x or .red");
+            return call_declared(e, f, 0);
         }
         fail(e.loc, "'" + n + "' cannot be called in a function (POV-Ray allows its math "
                               "functions, select, sum, prod, min, max and declared functions)");
+    }
+
+    // A declared function's call; `member` picks a vector function's component.
+    void call_declared(const ast::Node& e, const FunctionValue& f, uint8_t member) {
+        const std::string& n = e.text;
+        const size_t argc = e.children.size();
+        if (!f.program) fail(e.loc, "cannot call '" + n + "' in a function: " + f.why_not);
+        if (int(argc) != f.program->params)
+            fail(e.loc, "function '" + n + "' takes " + std::to_string(f.program->params) +
+                            " argument(s), found " + std::to_string(argc));
+        for (const auto& a : e.children) expr(*a);
+        p_.callees.push_back(f.program);
+        p_.needs_host = p_.needs_host || f.program->needs_host;
+        emit({Op::Call, member, uint16_t(argc), uint32_t(p_.callees.size() - 1)}, 1 - int(argc));
+    }
+
+    // F(...).member, F a vector function (pigment: 5 components, transform: 3).
+    void member(const ast::Node& e) {
+        const ast::Node& base = *e.children.at(0);
+        const Value* v = base.kind == ast::Kind::Call ? ev_.symbols.find(base.text) : nullptr;
+        if (!v || !v->is<std::shared_ptr<const FunctionValue>>())
+            fail(e.loc, "in a function only a vector function's result has members");
+        const FunctionValue& f = *v->as<std::shared_ptr<const FunctionValue>>();
+        if (f.program && f.program->components == 1)
+            fail(e.loc, "'" + base.text + "' is a float function: its result has no members");
+        const std::string& m = e.text;
+        uint8_t index;
+        if (m == "x" || m == "u" || m == "red") index = 0;
+        else if (m == "y" || m == "v" || m == "green") index = 1;
+        else if (m == "z" || m == "blue") index = 2;
+        else if (m == "t" || m == "filter") index = 3;
+        else if (m == "transmit") index = 4;
+        else if (m == "gray" || m == "grey") index = fn::kMemberGray;
+        else if (m == "hf") index = fn::kMemberHf;
+        else fail(e.loc, "unknown member '." + m + "'");
+        call_declared(base, f, index);
     }
 
     // pow(e, c): a literal 0 is 1 (with POV's warning), 2..8 products of e, else C's pow.
@@ -449,6 +480,46 @@ private:
 };
 
 }  // namespace
+
+// `function { pigment { } }`, `{ pattern { } }` and `{ transform { } }`: x, y, z into one
+// external (pigment, pattern: the renderer evaluates them) or a matrix (transform).
+fn::ProgramPtr Evaluator::compile_vector_function(const ast::Node& block) {
+    if (!block.params.empty())
+        throw LumenError(block.loc, "a " + block.children.back()->text +
+                                        " function takes no parameter list (it has x, y, z)");
+    const ast::Node& body = *block.children.back();
+    auto p = std::make_shared<fn::Program>();
+    for (uint32_t i = 0; i < 3; ++i) p->code.push_back({Op::Arg, 0, 0, i});
+    p->max_stack = 3;
+    if (body.text == "transform") {
+        const Value v = eval(body);
+        if (!v.is<std::shared_ptr<const scene::Transform>>())
+            throw LumenError(body.loc, "expected a transform");
+        const glm::dmat4& m = v.as<std::shared_ptr<const scene::Transform>>()->m;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c) p->consts.push_back(m[c][r]);
+        p->code.push_back({Op::Transform, fn::kMemberAsked, 3, 0});
+        p->components = 3;
+        return p;
+    }
+    // A pattern function is its pattern block read as a pigment: the pattern and its
+    // modifiers, whose value (before any colour map) the renderer returns.
+    const bool pattern = body.text == "pattern";
+    const Value v = pattern ? eval_block_as(body, "pigment") : eval(body);
+    if (!v.is<scene::PigmentPtr>()) throw LumenError(body.loc, "expected a pigment");
+    fn::External e;
+    e.kind = pattern ? fn::External::Kind::Pattern : fn::External::Kind::Pigment;
+    const scene::PigmentPtr& pigment = v.as<scene::PigmentPtr>();
+    scene::ContentHash h;
+    h.add(pigment);
+    e.content = h.value();
+    e.payload = pigment;
+    p->externals.push_back(std::move(e));
+    p->code.push_back({Op::External, pattern ? uint8_t(0) : fn::kMemberAsked, 3, 0});
+    p->components = pattern ? 1 : 5;
+    p->needs_host = true;
+    return p;
+}
 
 fn::ProgramPtr Evaluator::compile_function(const ast::Node& block) {
     const ast::Node& body = *block.children.back();

@@ -109,6 +109,11 @@ public:
     Value call_function(const FunctionValue& fn, const ast::Node& call);
     // A `function { }` block's body compiled (compile_function.cpp); located errors.
     fn::ProgramPtr compile_function(const ast::Node& block);
+    // `function { pigment | pattern | transform { } }`.
+    fn::ProgramPtr compile_vector_function(const ast::Node& block);
+    // A block evaluated as if its keyword were `keyword` (a pattern function's pattern block
+    // read as a pigment).
+    Value eval_block_as(const ast::Node& block, const std::string& keyword);
     // The context compiled functions run in at parse time (the current noise_generator).
     fn::Context function_context() const;
     // `expr` evaluated as a function body with x, y, z bound (BuildContext::eval_at).
@@ -132,6 +137,8 @@ public:
     bool version_given = false;
 
 private:
+    // The block built as `kw`, or kept as a BlockValue for its owner to read (`keep`).
+    Value evaluate_block(const ast::Node& block, const std::string& kw, bool keep);
     Value member(const ast::Node& e);
     Value colour(const ast::Node& e);
     Value array_decl(const ast::Node& e);

@@ -12,6 +12,7 @@ using ast::Kind;
 Evaluator::Evaluator(SourceManager& sources, const InterpOptions& options, WarningSink warn)
     : budget(options), sources_(sources), options_(options), warn_(std::move(warn)) {
     ctx.warn = warn_;
+    ctx.function_host = options_.function_host.get();
     ctx.eval_at = [this](const ast::Node& expr, double x, double y, double z) {
         return eval_at(expr, x, y, z);
     };
@@ -156,7 +157,10 @@ Value Evaluator::eval_block(const ast::Node& block) {
         } else if (block.children.empty()) {
             throw LumenError(block.loc, "a function needs a body");
         } else if (const ast::Node& body = *block.children.back(); body.kind == ast::Kind::Block) {
-            f.why_not = "'" + body.text + "' functions are not supported";
+            if (body.text == "pigment" || body.text == "pattern" || body.text == "transform")
+                f.program = compile_vector_function(block);
+            else
+                f.why_not = "'" + body.text + "' functions are not supported";
         } else {
             f.program = compile_function(block);
         }
@@ -176,14 +180,21 @@ Value Evaluator::eval_block(const ast::Node& block) {
     const bool blob_component = (kw == "sphere" || kw == "cylinder") && &block == block_item_ &&
                                 !open_blocks_.empty() && open_blocks_.back() == "blob";
     block_item_ = nullptr;
+    return evaluate_block(block, kw, object_pattern || blob_component);
+}
+
+Value Evaluator::eval_block_as(const ast::Node& block, const std::string& keyword) {
+    return evaluate_block(block, keyword, false);
+}
+
+Value Evaluator::evaluate_block(const ast::Node& block, const std::string& kw, bool keep) {
     open_blocks_.push_back(kw);
     struct Close {
         std::vector<std::string>& blocks;
         ~Close() { blocks.pop_back(); }
     } close{open_blocks_};
     BlockValue bv{kw, flatten_sealed(block.children), block.loc};
-    if (object_pattern || blob_component)
-        return Value{std::make_shared<const BlockValue>(std::move(bv)), block.loc};
+    if (keep) return Value{std::make_shared<const BlockValue>(std::move(bv)), block.loc};
     Value v = build_block(ctx, bv);
     if (v.loc.line == 0) v.loc = block.loc;
     return v;

@@ -8,6 +8,7 @@
 
 #include "base/diagnostics.hpp"
 #include "base/source.hpp"
+#include "function/vm.hpp"
 #include "scene/object_queries.hpp"
 #include "scene/scene.hpp"
 
@@ -44,6 +45,9 @@ struct InterpOptions {
     // Answers trace() and inside() (the renderer's, given by the caller); without it they are
     // reported as not supported.
     std::shared_ptr<scene::ObjectQueries> object_queries;
+    // Evaluates pigment and pattern functions called while parsing (the renderer's, given by
+    // the caller); without it such calls are errors.
+    std::shared_ptr<const fn::Host> function_host;
 };
 
 using WarningSink = std::function<void(const Diagnostic&)>;

@@ -22,10 +22,19 @@ Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
         throw LumenError(call.loc, "function '" + call.text + "' takes " +
                                        std::to_string(program.params) + " argument(s), found " +
                                        std::to_string(call.children.size()));
+    if (program.needs_host && !options_.function_host)
+        throw LumenError(call.loc, "cannot evaluate " + fn.keyword + " '" + call.text +
+                                       "' here: pigment and pattern functions need the renderer");
     std::vector<double> args;
     for (const auto& a : call.children) args.push_back(eval_float(*a));
     budget.step(call.loc);
-    return Value{fn::evaluate(program, args, function_context()), call.loc};
+    if (program.components == 1)
+        return Value{fn::evaluate(program, args, function_context()), call.loc};
+    // A vector function returns every component: a pigment's 5, a transform's 3.
+    VecN v;
+    for (int c = 0; c < program.components; ++c)
+        v.c.push_back(fn::evaluate(program, args, function_context(), c));
+    return Value{std::move(v), call.loc};
 }
 
 double Evaluator::eval_at(const ast::Node& expr, double x, double y, double z) {

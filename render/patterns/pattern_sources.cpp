@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "function/vm.hpp"
+#include "render/function_host.hpp"
 #include "render/node.hpp"
 #include "render/pigment.hpp"
 #include "scene/object.hpp"
@@ -113,6 +114,7 @@ double evaluate(const scene::pattern::Function& k, const glm::dvec3& p,
     if (!k.program) return 0;
     const double args[3] = {p.x, p.y, p.z};
     fn::Context context;
+    context.host = &function_host();
     if (pattern.globals) context.noise_generator = pattern.globals->noise_generator;
     const double v = fn::evaluate(*k.program, args, context);
     return v > 1 ? std::fmod(v, 1.0) : v;

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/function_host.hpp"
+
 namespace lumen::render {
 
 namespace {
@@ -127,6 +129,7 @@ IsosurfaceShape make_isosurface(const scene::Isosurface& s) {
     IsosurfaceShape out;
     out.iso = s;
     if (s.globals) out.context.noise_generator = s.globals->noise_generator;
+    out.context.host = &function_host();
     out.valid = bool(s.function) && s.function->params == 3;
     return out;
 }
