@@ -89,6 +89,7 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& g) {
             if (g.noise_generator < 1 || g.noise_generator > 3)
                 cur.fail(item.loc, "noise_generator must be 1, 2 or 3");
             cur.ctx().noise_generator_given = true;
+            cur.ctx().noise_generator_read = g.noise_generator;
         } else if (w == "number_of_waves") {
             g.number_of_waves = cur.expect_int(w);
             if (g.number_of_waves > noise::kMaxWaves)

@@ -23,6 +23,7 @@ struct BuildContext {
     std::shared_ptr<scene::PatternGlobals> pattern_globals =
         std::make_shared<scene::PatternGlobals>();
     bool noise_generator_given = false;  // global_settings { noise_generator } was read
+    int noise_generator_read = 2;        // the value read
     // global_settings { charset utf8 | sys }: strings read later are UTF-8. POV-Ray 3.7's
     // default is ascii, whatever the #version.
     bool utf8_strings = false;
@@ -32,9 +33,12 @@ struct BuildContext {
     // as in `height_field { function W, H { expr } }`); throws LumenError where it cannot.
     // Empty when no evaluator runs (tests that build hand-made items).
     std::function<double(const ast::Node& expr, double x, double y, double z)> eval_at;
-    // What compiled functions run with at parse time: the noise_generator as it stands.
+    // What compiled functions run with at parse time: the noise_generator as it stands (the
+    // scene's final one is only known at its end: interp/build_block.cpp).
     fn::Context function_context() const {
-        return {pattern_globals ? pattern_globals->noise_generator : 2, function_host};
+        const int generator = noise_generator_given ? noise_generator_read
+                              : language_version < 3.5 ? 1 : 2;
+        return {generator, function_host};
     }
     const fn::Host* function_host = nullptr;  // InterpOptions::function_host
 };

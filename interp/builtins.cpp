@@ -225,7 +225,9 @@ const BuiltinTable& builtin_table() {
                            return vec3_value({p.y * q.z - p.z * q.y, p.z * q.x - p.x * q.z, p.x * q.y - p.y * q.x}, c.loc);
                        }};
         t["vlength"] = {1, 1, false, [](Evaluator&, const ast::Node& c, Args& a) {
+                            // A float is promoted to <f, f, f>: vlength(1) is sqrt(3) (POV).
                             std::vector<double> v = components(a[0]);
+                            if (v.size() == 1) v.assign(3, v[0]);
                             double s = 0;
                             for (double x : v) s += x * x;
                             return Value{std::sqrt(s), c.loc};

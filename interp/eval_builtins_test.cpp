@@ -98,6 +98,7 @@ TEST_F(BuiltinTest, VectorFunctions) {
     EXPECT_EQ(vec("vcross(<1,0,0>,<0,1,0>)"), (V{0, 0, 1}));
     expect_vec_near(vec("vnormalize(<3,0,4>)"), {0.6, 0, 0.8}, 1e-15);
     EXPECT_DOUBLE_EQ(number("vlength(<3,4,0>)"), 5);
+    EXPECT_DOUBLE_EQ(number("vlength(1)"), std::sqrt(3.0));  // a float is <1, 1, 1> (POV)
     expect_vec_near(vec("vrotate(<0,1,0>,<90,0,0>)"), {0, 0, 1}, 1e-12);
     expect_vec_near(vec("vrotate(<1,0,0>,<0,90,0>)"), {0, 0, -1}, 1e-12);
     expect_vec_near(vec("vrotate(<1,0,0>,<0,0,90>)"), {0, 1, 0}, 1e-12);

@@ -66,10 +66,12 @@ double tricubic(const scene::pattern::DensityGrid& g, const glm::dvec3& p) {
 double evaluate(const scene::pattern::Average&, const glm::dvec3&) { return 0.0; }
 
 // POV-Ray's grey of the colour (0.297 r + 0.589 g + 0.114 b), the pigment evaluated at the
-// pattern point.
+// pattern point; in single precision, as POV-Ray's colours are (white's grey is then exactly
+// 1, which in double would be 0.9999999999999999).
 double evaluate(const scene::pattern::PigmentPattern& k, const glm::dvec3& p) {
     const scene::Colour c = evaluate_pigment(k.pigment.get(), p);
-    return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+    const float r = float(c.r), g = float(c.g), b = float(c.b);
+    return 0.297f * r + 0.589f * g + 0.114f * b;
 }
 
 // The unit cube holds the grid; outside it the density is 0. Interpolation 1 blends the
