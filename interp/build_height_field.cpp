@@ -100,11 +100,13 @@ scene::ObjectPtr field_object(ItemCursor& cur, SourceLoc block, const image::Pov
 
 // `function W, H { expr }`: a W x H image whose pixel (column j, row i from the top) is
 // expr at (j / (W - 1), i / (H - 1), 0), stored as 16-bit grey trunc(v * 65535) with v kept
-// in [0, 1]. Null when the body is a pigment (or other block), which lumen cannot evaluate.
+// in [0, 1]; a pigment function's as 16-bit colour channels. Null when the function cannot be
+// evaluated here (a spline function, or a pigment without the renderer's host).
 std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionValue& fn) {
     const ast::Node& node = *fn.node;
     if (!node.flag || node.children.size() != 3 || !cur.ctx().eval_at) return nullptr;
-    if (!fn.program) return nullptr;
+    if (!fn.program || (fn.program->needs_host && !cur.ctx().function_host)) return nullptr;
+    const bool colour = fn.program->components > 1;
     auto size = [&](const ast::Node& e) {
         const double v = cur.ctx().eval_at(e, 0, 0, 0);
         if (!(v + 0.5 >= 2 && v + 0.5 < image::kMaxImageSide + 1))
@@ -118,14 +120,24 @@ std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionV
     auto img = std::make_shared<image::PovImage>();
     img->width = w;
     img->height = h;
-    img->grey = img->high_precision = true;
+    img->grey = !colour;
+    img->high_precision = true;
     img->colours.resize(size_t(w) * size_t(h));
+    const fn::Context context = cur.ctx().function_context();
+    auto channel = [](double v) {
+        return float(std::trunc(std::clamp(std::isnan(v) ? 0.0 : v, 0.0, 1.0) * 65535) / 65535);
+    };
     for (int i = 0; i < h; ++i)
         for (int j = 0; j < w; ++j) {
             const double p[3] = {double(j) / (w - 1), double(i) / (h - 1), 0};
-            const double v = fn::evaluate(*fn.program, p, cur.ctx().function_context());
-            const float g = float(std::trunc(std::clamp(std::isnan(v) ? 0.0 : v, 0.0, 1.0) * 65535) / 65535);
-            img->colours[size_t(i) * size_t(w) + size_t(j)] = {g, g, g, 1};
+            auto& px = img->colours[size_t(i) * size_t(w) + size_t(j)];
+            if (!colour) {
+                const float g = channel(fn::evaluate(*fn.program, p, context));
+                px = {g, g, g, 1};
+                continue;
+            }
+            for (int c = 0; c < 3; ++c) px[c] = channel(fn::evaluate(*fn.program, p, context, c));
+            px[3] = 1;
         }
     return img;
 }

@@ -35,9 +35,13 @@ struct BuildContext {
     std::function<double(const ast::Node& expr, double x, double y, double z)> eval_at;
     // What compiled functions run with at parse time: the noise_generator as it stands (the
     // scene's final one is only known at its end: interp/build_block.cpp).
+    // Patterns read the scene's generator from the shared record, which holds the final one
+    // only when the scene ends: while parsing, a pattern function sees the generator as it
+    // stands, as in POV-Ray.
     fn::Context function_context() const {
         const int generator = noise_generator_given ? noise_generator_read
                               : language_version < 3.5 ? 1 : 2;
+        if (pattern_globals) pattern_globals->noise_generator = generator;
         return {generator, function_host};
     }
     const fn::Host* function_host = nullptr;  // InterpOptions::function_host

@@ -7,14 +7,7 @@
 
 namespace lumen::interp {
 
-fn::Context Evaluator::function_context() const {
-    const fn::Context c = ctx.function_context();
-    // Patterns read the scene's generator from the shared record, which holds the final one
-    // only when the scene ends (build_block.cpp): while parsing, a pattern function sees the
-    // generator as it stands, as in POV-Ray.
-    if (ctx.pattern_globals) ctx.pattern_globals->noise_generator = c.noise_generator;
-    return c;
-}
+fn::Context Evaluator::function_context() const { return ctx.function_context(); }
 
 Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
     if (!fn.program) {
