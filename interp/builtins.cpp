@@ -53,7 +53,7 @@ std::optional<Value> Evaluator::builtin_constant(const std::string& n, SourceLoc
 
 std::string format_float(double f, int width, int precision) {
     if (precision < 0) precision = 6;
-    precision = std::min(precision, 16);
+    precision = std::min(precision, 100);  // POV-Ray prints as many as asked (25 checked)
     width = std::clamp(width, -64, 64);
     const char* fmt = width < 0 ? "%0*.*f" : "%*.*f";
     int w = std::abs(width);

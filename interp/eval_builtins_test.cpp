@@ -131,6 +131,7 @@ TEST_F(BuiltinTest, StrAndVstrFormatLikePrintf) {
     EXPECT_EQ(str("str(1.23456,-8,2)"), "00001.23");
     EXPECT_EQ(str("str(-1.5,6,1)"), "  -1.5");
     EXPECT_EQ(str("str(12,3,0)"), " 12");
+    EXPECT_EQ(str("str(1/3,0,20)"), "0.33333333333333331483");  // no cap at 16 digits (POV)
     EXPECT_EQ(str("str(3.14159,0,-1)"), "3.141590");
     EXPECT_EQ(str("str(2.5,0,0)"), "2");
     EXPECT_EQ(str("str(1e20,0,-1)"), "100000000000000000000.000000");
