@@ -35,12 +35,22 @@ constexpr int kMaxTubes = 10000;
 
 // One call's arguments. The point is a copy: several functions move it before use, as POV's
 // do on its stack.
+// References into the VM's stack, not copies: the VM has just stored the arguments there one
+// by one, and a wide copy of them would wait on those stores.
 struct Args {
-    double x, y, z;
+    const double& x;
+    const double& y;
+    const double& z;
     const double* p;  // the parameters after x, y, z
     int scene_generator;
 };
-using Function = double (*)(Args);
+using Function = double (*)(const Args&);
+// A copy for the few functions that move x off the axis.
+struct OwnArgs {
+    double x, y, z;
+    const double* p;
+    int scene_generator;
+};
 
 // Most surfaces' value: the field strength times r, limited to [-10, 10]. The argument order
 // of min and max is POV's; it makes a NaN product 10.
@@ -92,36 +102,36 @@ Gaussians gaussians(double x2, double y2, double z2, double e, double k) {
             std::exp(-(x2 + y2 * e + z2 * e) * k)};
 }
 
-double algbr_cyl1(Args a) {
+double algbr_cyl1(const Args& a) {
     const Plane q = sor(a, a.p[2], a.p[3], a.p[4]);
     const double r = -(q.x2 * std::fabs(q.x) - q.x2 + q.y2);
     return -std::min(a.p[1], std::max(a.p[0] * r, -a.p[1]));
 }
-double algbr_cyl2(Args a) {
+double algbr_cyl2(const Args& a) {
     const auto [X, Y, x2, y2] = sor(a, a.p[2], a.p[3], a.p[4]);
     const double r = -(2 * x2 * x2 - 3 * x2 * Y + y2 - 2 * y2 * Y + y2 * y2);
     return std::min(a.p[1], std::max(a.p[0] * r, -a.p[1]));
 }
-double algbr_cyl3(Args a) {
+double algbr_cyl3(const Args& a) {
     const auto [X, Y, x2, y2] = sor(a, a.p[2], a.p[3], a.p[4]);
     const double r = -(x2 * x2 + x2 * y2 - 2 * x2 * Y - X * y2 + y2);
     return std::min(a.p[1], std::max(a.p[0] * r, -a.p[1]));
 }
-double algbr_cyl4(Args a) {
+double algbr_cyl4(const Args& a) {
     const auto [X, Y, x2, y2] = sor(a, a.p[2], a.p[3], a.p[4]);
     const double r = -(x2 * x2 + y2 * y2 + 2 * x2 * y2 + 3 * x2 * Y - y2 * Y);
     return std::min(a.p[1], std::max(a.p[0] * r, -a.p[1]));
 }
-double bicorn(Args a) {
+double bicorn(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, s = a.p[1] * a.p[1];
     const double q = x2 + z2 + 2 * a.p[1] * a.y - s;
     return field(a.p[0], y2 * (s - (x2 + z2)) - q * q);
 }
-double bifolia(Args a) {
+double bifolia(const Args& a) {
     const double x2 = a.x * a.x, z2 = a.z * a.z, s = x2 + a.y * a.y + z2;
     return field(a.p[0], -(s * s - a.p[1] * (x2 + z2) * a.y));
 }
-double blob(Args a) {
+double blob(const Args& a) {
     const double y2 = a.y * a.y, z2 = a.z * a.z, h = a.p[0] * 0.5;
     double r1 = ((a.x + h) * (a.x + h) + y2 + z2) * a.p[2] * a.p[2];
     if (r1 > 1.) r1 = 1.;  // not std::min: a NaN stays NaN, as in POV
@@ -129,12 +139,12 @@ double blob(Args a) {
     if (r2 > 1.) r2 = 1.;
     return -(a.p[1] * (1. - r1) * (1. - r1) + a.p[3] * (1. - r2) * (1. - r2));
 }
-double blob2(Args a) {
+double blob2(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, d = a.x - a.p[0];
     const double r = std::exp(-(x2 + y2 + z2) * a.p[1]) + std::exp(-(d * d + y2 + z2) * a.p[1]);
     return a.p[3] - r * a.p[2];
 }
-double boy_surface(Args a) {
+double boy_surface(const Args& a) {
     const double x = a.x, y = a.y, z = a.z, x2 = x * x, y2 = y * y, z2 = z * z;
     const double w = 1 - z, h = x2 + y2, s2 = std::sqrt(2.0);
     const double r =
@@ -145,7 +155,8 @@ double boy_surface(Args a) {
                       (-81 * h * h - 72 * z2 * h + 108 * s2 * x * z * (x2 - 3 * y2) + 4 * z2 * z2));
     return field(a.p[0], r);
 }
-double comma(Args a) {
+double comma(const Args& in) {
+    OwnArgs a{in.x, in.y, in.z, in.p, in.scene_generator};
     // POV moves x off the axis before the atan2 (and keeps it moved for the rest).
     if (a.x == 0 && a.z == 0) a.x = 0.0001;
     const double s = a.p[0], th = std::atan2(a.z, a.x);
@@ -157,32 +168,32 @@ double comma(Args a) {
         s * 0.5 - std::sqrt((a.x - s * 0.5) * (a.x - s * 0.5) + a.z * a.z + a.y * a.y);
     return -std::max(t, u);
 }
-double cross_ellipsoids(Args a) {
+double cross_ellipsoids(const Args& a) {
     const Gaussians g = gaussians(a.x * a.x, a.y * a.y, a.z * a.z, a.p[0], a.p[1]);
     return a.p[3] - std::max(std::max(g.e1, g.e2), g.e3) * a.p[2];
 }
-double crossed_trough(Args a) { return field(a.p[0], a.x * a.x * a.z * a.z - a.y); }
-double cubic_saddle(Args a) {
+double crossed_trough(const Args& a) { return field(a.p[0], a.x * a.x * a.z * a.z - a.y); }
+double cubic_saddle(const Args& a) {
     return field(a.p[0], -(a.x * a.x * a.x - a.y * a.y * a.y - a.z));
 }
 // Also f_odd (43): POV's two polynomials differ only in writing 2*x2*y2 as 2*y2*x2.
-double cushion(Args a) {
+double cushion(const Args& a) {
     const double z = a.z, x2 = a.x * a.x, y2 = a.y * a.y, z2 = z * z;
     return field(a.p[0], z2 * x2 - z2 * z2 - 2 * z * x2 + 2 * z2 * z + x2 - z2 -
                              (x2 - z) * (x2 - z) - y2 * y2 - 2 * x2 * y2 - y2 * z2 +
                              2 * y2 * z + y2);
 }
-double devils_curve(Args a) {
+double devils_curve(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0],
                  -(x2 * x2 + 2 * x2 * z2 - 0.36 * x2 - y2 * y2 + 0.25 * y2 + z2 * z2));
 }
-double devils_curve_2d(Args a) {
+double devils_curve_2d(const Args& a) {
     const Plane q = sor(a, a.p[3], a.p[4], a.p[5]);
     return field(a.p[0],
                  -(q.x2 * (q.x2 - a.p[1] * a.p[1]) - q.y2 * (q.y2 - a.p[2] * a.p[2])));
 }
-double dupin_cyclid(Args a) {
+double dupin_cyclid(const Args& a) {
     const double x = a.x, y = a.y, x2 = x * x, y2 = y * y, z2 = a.z * a.z;
     const double R = a.p[1], dx = a.p[3], dy = a.p[4];
     const double c = a.p[5] * a.p[5], A = a.p[2] * a.p[2], B = dy * dy;
@@ -198,12 +209,12 @@ double dupin_cyclid(Args a) {
                        4 * c * c * R2 * y2 + c * c * c * c);
     return field(a.p[0], r);
 }
-double ellipsoid(Args a) {
+double ellipsoid(const Args& a) {
     // No "- 1": the surface is at the threshold the scene gives.
     return std::sqrt(a.x * a.x * a.p[0] * a.p[0] + a.y * a.y * a.p[1] * a.p[1] +
                      a.z * a.z * a.p[2] * a.p[2]);
 }
-double enneper(Args a) {
+double enneper(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     // POV replaces z (sign and all) near the plane z = 0, after squaring it.
     const double z = std::fabs(a.z) < 0.2 ? 0.2 : a.z;
@@ -213,27 +224,28 @@ double enneper(Args a) {
     const double r2 = (y2 - x2) / (4 * z) - 0.0 * (x2 + y2 + 0.0 * z2) + 0.0;
     return field(a.p[0], -(r1 * r1 * r1 - 6 * r2 * r2));
 }
-double flange_cover(Args a) {
+double flange_cover(const Args& a) {
     const Gaussians g = gaussians(a.x * a.x, a.y * a.y, a.z * a.z, a.p[0], a.p[1]);
     return a.p[3] - (g.e1 + g.e2 + g.e3) * a.p[2];
 }
-double folium_surface(Args a) {
+double folium_surface(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], (y2 + z2) * (1 + (a.p[2] - 4 * a.p[1]) * a.x) + x2 * (1 + a.p[2]));
 }
-double folium_surface_2d(Args a) {
+double folium_surface_2d(const Args& a) {
     const Plane q = sor(a, a.p[3], a.p[4], a.p[5]);
     return field(a.p[0], -(q.y2 * (1 + (a.p[2] - 4 * a.p[1]) * q.x) + q.x2 * (1 + a.p[2])));
 }
-double glob(Args a) {
+double glob(const Args& a) {
     const double x2 = a.x * a.x;
     return field(a.p[0], 0.5 * x2 * x2 * a.x + 0.5 * x2 * x2 - (a.y * a.y + a.z * a.z));
 }
-double heart(Args a) {
+double heart(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, q = 2 * x2 + y2 + z2 - 1;
     return field(a.p[0], -(q * q * q - 0.1 * x2 * z2 * a.z - y2 * z2 * a.z));
 }
-double helical_torus(Args a) {
+double helical_torus(const Args& in) {
+    OwnArgs a{in.x, in.y, in.z, in.p, in.scene_generator};
     const double* p = a.p;
     double rho = std::sqrt(a.x * a.x + a.z * a.z);
     if (a.x == 0 && a.z == 0) a.x = 0.000001;  // as POV, after rho and before the atan2
@@ -248,7 +260,8 @@ double helical_torus(Args a) {
     c = c - std::min(std::sqrt((d - p[5]) * (d - p[5]) + th * th * p[6]), d + p[5]);
     return -std::max(rho, c);
 }
-double helix1(Args a) {
+double helix1(const Args& in) {
+    OwnArgs a{in.x, in.y, in.z, in.p, in.scene_generator};
     const double* p = a.p;
     const double rho = std::sqrt(a.x * a.x + a.z * a.z);
     if (a.x == 0 && a.z == 0) a.x = 0.000001;
@@ -270,7 +283,7 @@ double helix1(Args a) {
     }
     return -p[2] + std::min(p[3] + rho, q);
 }
-double helix2(Args a) {
+double helix2(const Args& a) {
     const double* p = a.p;
     const double c = std::cos(a.y * p[1]), s = std::sin(a.y * p[1]);
     const double u = a.x - p[3] * c, w = a.z - p[3] * s;
@@ -289,66 +302,66 @@ Hex hex(Args in) {
     if (a * a + b * b > a2 * a2 + b2 * b2) a = a2, b = b2;
     return {a, b, std::atan2(b, a) < kPi / 6};
 }
-double hex_x(Args a) {
+double hex_x(const Args& a) {
     const Hex h = hex(a);
     return h.near ? h.a : std::cos(kPi / 3) * h.a + std::sin(kPi / 3) * h.b;
 }
-double hex_y(Args a) {
+double hex_y(const Args& a) {
     const Hex h = hex(a);
     return h.near ? h.b : std::fabs(-std::sin(kPi / 3) * h.a + std::cos(kPi / 3) * h.b);
 }
-double hunt_surface(Args a) {
+double hunt_surface(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     const double q = x2 + y2 + z2 - 13, w = 3 * x2 + y2 - 4 * z2 - 12;
     return field(a.p[0], -(4 * q * q * q + 27 * w * w));
 }
-double hyperbolic_torus(Args a) {
+double hyperbolic_torus(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     const double A = a.p[1] * a.p[1], B = a.p[2] * a.p[2];
     return field(a.p[0], -(x2 * x2 + 2 * x2 * y2 - 2 * x2 * z2 - 2 * (A + B) * x2 + y2 * y2 -
                            2 * y2 * z2 + 2 * (A - B) * y2 + z2 * z2 + 2 * (A + B) * z2 +
                            (A - B) * (A - B)));
 }
-double isect_ellipsoids(Args a) {
+double isect_ellipsoids(const Args& a) {
     const Gaussians g = gaussians(a.x * a.x, a.y * a.y, a.z * a.z, a.p[0], a.p[1]);
     return a.p[3] - std::min(std::min(g.e1, g.e2), g.e3) * a.p[2];
 }
-double kampyle_of_eudoxus(Args a) {
+double kampyle_of_eudoxus(const Args& a) {
     const double x2 = a.x * a.x, b = a.p[2];
     return field(a.p[0],
                  -((a.y * a.y + a.z * a.z) - b * b * x2 * x2 + b * b * a.p[1] * a.p[1] * x2));
 }
-double kampyle_of_eudoxus_2d(Args a) {
+double kampyle_of_eudoxus_2d(const Args& a) {
     const Plane q = sor(a, a.p[3], a.p[4], a.p[5]);
     const double b = a.p[2];
     // a*b where the 3-D version has a*a: POV's source has it so.
     return field(a.p[0], -(q.y2 - b * b * q.x2 * q.x2 + b * b * a.p[1] * b * q.x2));
 }
-double klein_bottle(Args a) {
+double klein_bottle(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, s = x2 + y2 + z2;
     const double m = s - 2 * a.y - 1;
     return field(a.p[0], -((s + 2 * a.y - 1) * (m * m - 8 * z2) + 16 * a.x * a.z * m));
 }
-double kummer_surface_v1(Args a) {
+double kummer_surface_v1(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], -(x2 * x2 + y2 * y2 + z2 * z2 - x2 - y2 - z2 - x2 * y2 - x2 * z2 -
                            y2 * z2 + 1));
 }
-double kummer_surface_v2(Args a) {
+double kummer_surface_v2(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], -(x2 * x2 + y2 * y2 + z2 * z2 + a.p[1] * (x2 + y2 + z2) +
                            a.p[2] * (x2 * y2 + x2 * z2 + y2 * z2) + a.p[3] * a.x * a.y * a.z - 1));
 }
-double lemniscate_of_gerono(Args a) {
+double lemniscate_of_gerono(const Args& a) {
     const double x2 = a.x * a.x;
     return field(a.p[0], -(x2 * x2 - x2 + a.y * a.y + a.z * a.z));
 }
-double lemniscate_of_gerono_2d(Args a) {
+double lemniscate_of_gerono_2d(const Args& a) {
     const Plane q = sor(a, a.p[3], a.p[4], a.p[5]);
     const double b = a.p[2];
     return field(a.p[0], -(q.y2 - b * b * a.p[1] * a.p[1] * q.x2 + b * b * q.x2 * q.x2));
 }
-double mesh1(Args a) {
+double mesh1(const Args& a) {
     const double* p = a.p;
     // The distance across one set of threads: u folded into [0, 2d), less d, scaled by k.
     auto across = [&](double u, double d) {
@@ -363,47 +376,47 @@ double mesh1(Args a) {
     t = std::max(dist(across(a.z, p[1]), (a.y + cx * p[3]) * p[4]), t);
     return -std::max(dist(across(a.z - p[1], p[1]), (a.y - cx * p[3]) * p[4]), t);
 }
-double mitre(Args a) {
+double mitre(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], -(4 * x2 * (x2 + y2 + z2) - y2 * (1 - y2 - z2)));
 }
-double nodal_cubic(Args a) {
+double nodal_cubic(const Args& a) {
     return field(a.p[0], -(a.y * a.y * a.y + a.z * a.z * a.z - 6 * a.y * a.z));
 }
-double ovals_of_cassini(Args a) {
+double ovals_of_cassini(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, R = a.p[1];
     const double q = x2 + y2 + z2 + R * R;
     return field(a.p[0], -(q * q - a.p[3] * R * R * (x2 + z2) - a.p[2] * a.p[2]));
 }
-double paraboloid(Args a) { return field(a.p[0], -(a.x * a.x - a.y + a.z * a.z)); }
-double parabolic_torus(Args a) {
+double paraboloid(const Args& a) { return field(a.p[0], -(a.x * a.x - a.y + a.z * a.z)); }
+double parabolic_torus(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z, z = a.z;
     const double A = a.p[1] * a.p[1], B = a.p[2] * a.p[2];
     return field(a.p[0], -(x2 * x2 + 2 * x2 * y2 - 2 * x2 * z - (A + B) * x2 + y2 * y2 -
                            2 * y2 * z + (A - B) * y2 + z2 + (A + B) * z + (A - B) * (A - B)));
 }
-double ph(Args a) { return std::atan2(std::sqrt(a.x * a.x + a.z * a.z), a.y); }
-double pillow(Args a) {
+double ph(const Args& a) { return std::atan2(std::sqrt(a.x * a.x + a.z * a.z), a.y); }
+double pillow(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], x2 * x2 + y2 * y2 + z2 * z2 - (x2 + y2 + z2));
 }
-double piriform(Args a) {
+double piriform(const Args& a) {
     const double x2 = a.x * a.x;
     return -field(a.p[0], -((x2 * x2 - x2 * a.x) + a.y * a.y + a.z * a.z));
 }
-double piriform_2d(Args a) {
+double piriform_2d(const Args& a) {
     const Plane q = sor(a, a.p[4], a.p[5], a.p[6]);
     const double f = a.p[3];
     return field(a.p[0], -(q.y * q.y - a.p[1] * f * f * q.x2 * q.x - a.p[2] * f * f * q.x2 * q.x2));
 }
-double poly4(Args a) {
+double poly4(const Args& a) {
     const double* c = a.p;
     const double y = a.y, y2 = y * y;
     double q = c[0] + c[1] * y + c[2] * y2 + c[3] * y2 * y + c[4] * y2 * y2;
     if (q < -5.) q = -5.;
     return -q + std::sqrt(a.x * a.x + a.z * a.z);
 }
-double polytubes(Args a) {
+double polytubes(const Args& a) {
     const double* p = a.p;
     const double y = a.y, y2 = y * y;
     const double rho = p[1] + p[2] * y + p[3] * y2 + p[4] * y2 * y + p[5] * y2 * y2;
@@ -416,7 +429,8 @@ double polytubes(Args a) {
     }
     return -r;
 }
-double quantum(Args a) {
+double quantum(const Args& in) {
+    OwnArgs a{in.x, in.y, in.z, in.p, in.scene_generator};
     if (a.x == 0 && a.z == 0) a.x = 1e-6;  // here before everything, unlike helix1
     const double rho = std::sqrt(a.x * a.x + a.z * a.z);
     const double c = std::cos(std::atan2(rho, a.y));
@@ -424,20 +438,20 @@ double quantum(Args a) {
     const double q = r * r * std::exp(-r * 0.33333333) * (3. * c * c - 1);
     return (q * q - 12.0) * (-0.1);
 }
-double quartic_paraboloid(Args a) {
+double quartic_paraboloid(const Args& a) {
     const double x2 = a.x * a.x, z2 = a.z * a.z;
     return field(a.p[0], -(x2 * x2 + z2 * z2 - a.y));
 }
-double quartic_saddle(Args a) {
+double quartic_saddle(const Args& a) {
     const double x2 = a.x * a.x, z2 = a.z * a.z;
     return field(a.p[0], -(x2 * x2 - z2 * z2 - a.y));
 }
-double quartic_cylinder(Args a) {
+double quartic_cylinder(const Args& a) {
     const double x2 = a.x * a.x, z2 = a.z * a.z, b = a.p[2];
     return field(a.p[0], -((x2 + z2) * a.y * a.y + b * b * (x2 + z2) - b * b * a.p[1] * a.p[1]));
 }
-double r(Args a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
-double rounded_box(Args a) {
+double r(const Args& a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
+double rounded_box(const Args& a) {
     const double R = a.p[0];
     // POV's form of max(0, |p| - (s - R)) per axis.
     auto out = [R](double c, double s) {
@@ -447,20 +461,21 @@ double rounded_box(Args a) {
     const double x = out(a.x, a.p[1]), y = out(a.y, a.p[2]), z = out(a.z, a.p[3]);
     return -R + std::sqrt(x * x + y * y + z * z) - 1e-6;
 }
-double sphere(Args a) { return -a.p[0] + std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
-double spikes(Args a) {
+double sphere(const Args& a) { return -a.p[0] + std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
+double spikes(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     const Gaussians g = gaussians(x2, y2, z2, a.p[0], a.p[1]);
     const double r = std::exp(-(x2 + y2 + z2) * a.p[3]) * a.p[4] - g.e1 - g.e2 - g.e3;
     return -r * a.p[2];
 }
-double spikes_2d(Args a) {
+double spikes_2d(const Args& a) {
     const double* p = a.p;
     return -(p[0] * std::cos(p[1] * a.x) * std::cos(p[2] * a.z) *
                  std::exp(-p[3] * (a.x * a.x + a.z * a.z)) -
              a.y);
 }
-double spiral(Args a) {
+double spiral(const Args& in) {
+    OwnArgs a{in.x, in.y, in.z, in.p, in.scene_generator};
     const double* p = a.p;
     double rho = std::sqrt(a.x * a.x + a.z * a.z);
     if (a.x == 0 && a.z == 0) a.x = 0.000001;  // also in the distance below, as in POV
@@ -478,59 +493,59 @@ double spiral(Args a) {
     const double R = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
     return -std::min(p[2] - R, p[1] - std::min(q, R));
 }
-double steiners_roman(Args a) {
+double steiners_roman(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], -(x2 * y2 + x2 * z2 + y2 * z2 + a.x * a.y * a.z));
 }
-double strophoid(Args a) {
+double strophoid(const Args& a) {
     const double x2 = a.x * a.x, c = a.p[3] * a.p[3];
     return field(a.p[0],
                  -((a.p[2] - a.x) * (a.y * a.y + a.z * a.z) - c * a.p[1] * x2 - c * x2 * a.x));
 }
-double strophoid_2d(Args a) {
+double strophoid_2d(const Args& a) {
     const Plane q = sor(a, a.p[4], a.p[5], a.p[6]);
     const double c = a.p[3] * a.p[3];
     return field(a.p[0], -((a.p[2] - q.x) * q.y2 - c * a.p[1] * q.x2 - c * q.x2 * q.x));
 }
-double superellipsoid(Args a) {
+double superellipsoid(const Args& a) {
     const double e = 2 / a.p[0], n = 1 / a.p[1];
     return 1 - std::pow(std::pow(std::pow(std::fabs(a.x), e) + std::pow(std::fabs(a.y), e),
                                  a.p[0] * n) +
                             std::pow(std::fabs(a.z), 2 * n),
                         a.p[1] * .5);
 }
-double th(Args a) { return std::atan2(a.x, a.z); }
-double torus(Args a) {
+double th(const Args& a) { return std::atan2(a.x, a.z); }
+double torus(const Args& a) {
     const double u = std::sqrt(a.x * a.x + a.z * a.z) - a.p[0];
     return -a.p[1] + std::sqrt(u * u + a.y * a.y);
 }
-double torus2(Args a) {
+double torus2(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     const double A = a.p[1] * a.p[1], B = a.p[2] * a.p[2];
     return field(a.p[0], -(x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2 + 2 * y2 * z2 -
                            2 * (A + B) * x2 + 2 * (A - B) * y2 - 2 * (A + B) * z2 +
                            (A - B) * (A - B)));
 }
-double torus_gumdrop(Args a) {
+double torus_gumdrop(const Args& a) {
     const double x2 = a.x * a.x, y2 = a.y * a.y, z2 = a.z * a.z;
     return field(a.p[0], -(4 * (x2 * x2 + (y2 + z2) * (y2 + z2)) + 17 * x2 * (y2 + z2) -
                            20 * (x2 + y2 + z2) + 17));
 }
-double umbrella(Args a) { return field(a.p[0], -(a.x * a.x - a.y * a.z * a.z)); }
-double witch_of_agnesi(Args a) {
+double umbrella(const Args& a) { return field(a.p[0], -(a.x * a.x - a.y * a.z * a.z)); }
+double witch_of_agnesi(const Args& a) {
     return field(a.p[0], -(a.p[1] * (a.y - 1) + (a.x * a.x + a.z * a.z) * a.y));
 }
-double witch_of_agnesi_2d(Args a) {
+double witch_of_agnesi_2d(const Args& a) {
     const Plane q = sor(a, a.p[3], a.p[4], a.p[5]);
     return field(a.p[0], -(a.p[1] * a.p[1] * q.y + q.x2 * q.y - a.p[2]));
 }
-double noise3d(Args a) { return detail::noise3d({a.x, a.y, a.z}, a.scene_generator); }
+double noise3d(const Args& a) { return detail::noise3d({a.x, a.y, a.z}, a.scene_generator); }
 // POV's trap for `function { pattern { ... } }`; without a pattern behind it, 0.
-double pattern(Args) { return 0.0; }
-double noise_generator(Args a) { return detail::noise_generator({a.x, a.y, a.z}, a.p); }
-double hetero_mf(Args a) { return detail::hetero_mf({a.x, a.y, a.z}, a.p); }
-double ridge(Args a) { return detail::ridge({a.x, a.y, a.z}, a.p); }
-double ridged_mf(Args a) { return detail::ridged_mf({a.x, a.y, a.z}, a.p); }
+double pattern(const Args&) { return 0.0; }
+double noise_generator(const Args& a) { return detail::noise_generator({a.x, a.y, a.z}, a.p); }
+double hetero_mf(const Args& a) { return detail::hetero_mf({a.x, a.y, a.z}, a.p); }
+double ridge(const Args& a) { return detail::ridge({a.x, a.y, a.z}, a.p); }
+double ridged_mf(const Args& a) { return detail::ridged_mf({a.x, a.y, a.z}, a.p); }
 
 struct Entry {
     InternalInfo info;

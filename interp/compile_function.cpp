@@ -315,9 +315,40 @@ private:
             fail(e.loc, "function '" + n + "' takes " + std::to_string(f.program->params) +
                             " argument(s), found " + std::to_string(argc));
         for (const auto& a : e.children) expr(*a);
+        if (inline_wrapper(*f.program, member)) return;
         p_.callees.push_back(f.program);
         p_.needs_host = p_.needs_host || f.program->needs_host;
         emit({Op::Call, member, uint16_t(argc), uint32_t(p_.callees.size() - 1)}, 1 - int(argc));
+    }
+
+    // A callee that only passes its arguments on, in order, to one internal function, external
+    // or transform (functions.inc's f_*, pigment and pattern functions) is that instruction
+    // here, not a call: its arguments are already on the stack.
+    bool inline_wrapper(const fn::Program& callee, uint8_t member) {
+        const size_t n = size_t(callee.params);
+        if (callee.code.size() != n + 1) return false;
+        for (size_t i = 0; i < n; ++i)
+            if (callee.code[i].op != Op::Arg || callee.code[i].a != i) return false;
+        Instr last = callee.code[n];
+        if (last.op == Op::Internal) {
+            emit(last, 1 - int(n));
+            return true;
+        }
+        if (last.op == Op::External) {
+            p_.externals.push_back(callee.externals[last.a]);
+            last.a = uint32_t(p_.externals.size() - 1);
+        } else if (last.op == Op::Transform) {
+            const uint32_t at = uint32_t(p_.consts.size());
+            p_.consts.insert(p_.consts.end(), callee.consts.begin() + last.a,
+                             callee.consts.begin() + last.a + 12);
+            last.a = at;
+        } else {
+            return false;
+        }
+        if (last.c == fn::kMemberAsked) last.c = member;
+        p_.needs_host = p_.needs_host || callee.needs_host;
+        emit(last, 1 - int(n));
+        return true;
     }
 
     // F(...).member, F a vector function (pigment: 5 components, transform: 3).
