@@ -57,10 +57,10 @@ double member(const double* c, int m) {
     return m >= 0 && m < 5 ? c[m] : 0;
 }
 
-// POV's min and max keep the new argument unless it is "not smaller" / "not larger" than the
-// running value: min(NaN, 5) = 5 but min(5, NaN) = NaN.
-double pov_min(double running, double next) { return next < running ? next : (running <= next ? running : next); }
-double pov_max(double running, double next) { return next > running ? next : (running >= next ? running : next); }
+// POV's min and max fold left to right: min(NaN, 5) = 5 but min(5, NaN) = NaN; max(5, NaN)
+// = 5 but max(NaN, 5) = NaN.
+double pov_min(double running, double next) { return running <= next ? running : next; }
+double pov_max(double running, double next) { return next > running ? next : running; }
 
 double run(const Program& p, const double* args, const Context& context, int component,
            int depth) {
