@@ -1,0 +1,47 @@
+// Pigment, pattern and transform functions called while parsing, evaluated by the renderer's
+// host (render/function_host.cpp), against POV-Ray 3.7.0.10: the expected lines are what
+// povray printed for the same scene with #debug (2026-12-05).
+#include <gtest/gtest.h>
+
+#include "base/diagnostics.hpp"
+#include "base/source.hpp"
+#include "interp/interpret.hpp"
+#include "render/function_host.hpp"
+
+namespace lumen::cli {
+namespace {
+
+const char* const kScene = R"(#version 3.7;
+#include "functions.inc"
+#declare P = function { pigment { gradient x color_map { [0 rgb <0.3, 0.2, 0.1>] [1 rgb <0.9, 0.5, 1>] } } }
+#declare T = function { transform { rotate 90*z translate x scale 2 } }
+#declare PA = function { pattern { bozo scale 0.3 } }
+#declare G = function { P(x, y, z).gray + T(x, y, z).y + PA(x, y, z) }
+#debug concat(str(P(0.25, 0, 0).red, 0, 17), " ", str(P(0.25, 0, 0).blue, 0, 17), "\n")
+#debug concat(str(T(1, 0, 0).x, 0, 17), " ", str(T(1, 0, 0).y, 0, 17), "\n")
+#debug concat(str(PA(0.1, 0.2, 0.3), 0, 17), "\n")
+#debug concat(str(G(0.1, 0.2, 0.3), 0, 17), "\n")
+#debug concat(str(f_granite(0.1, 0.2, 0.3), 0, 17), " ", str(f_wood(0.5, 0.2, 0.3), 0, 17), "\n")
+#debug concat(str(f_hexagon(0.1, 0.2, 0.3).gray, 0, 17), "\n")
+)";
+
+const char* const kPovRay = R"(0.44999998807907104 0.32499998807907104
+2.00000000000000000 2.00000000000000000
+0.65212957287094397
+1.11617957930526535
+0.64365354575611045 0.92296703857309903
+0.00000000000000000
+)";
+
+TEST(FunctionHost, PigmentPatternAndTransformFunctionsMatchPovRay) {
+    SourceManager sources;
+    interp::InterpOptions options;
+    options.function_host = render::shared_function_host();
+    std::string printed;
+    interp::interpret_text(sources, "functions.pov", kScene, options,
+                           [&](const Diagnostic& d) { printed += d.message; });  // #debug text
+    EXPECT_EQ(printed, kPovRay);
+}
+
+}  // namespace
+}  // namespace lumen::cli
