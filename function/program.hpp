@@ -20,6 +20,7 @@ enum class Op : uint8_t {
     Local,      // push locals[a]
     SetLocal,   // locals[a] = pop
     Add, Sub, Mul, Div, Neg,
+    AddConst, SubConst, MulConst,  // top op= consts[a] (an operator with a constant right side)
     Lt, Le, Eq, Ne, Ge, Gt,  // 1 or 0; exact (no SDL tolerance); NaN: Ne, Gt, Ge give 1
     And, Or,                 // (a != 0) and/or (b != 0)
     Math1,      // push math1(a, pop): sin, cos, ... (Math1 below)

@@ -81,6 +81,9 @@ double run(const Program& p, const double* args, const Context& context, int com
             case Op::Mul: --sp; stack[sp - 1] *= stack[sp]; break;
             case Op::Div: --sp; stack[sp - 1] /= stack[sp]; break;
             case Op::Neg: stack[sp - 1] = -stack[sp - 1]; break;
+            case Op::AddConst: stack[sp - 1] += p.consts[in.a]; break;
+            case Op::SubConst: stack[sp - 1] -= p.consts[in.a]; break;
+            case Op::MulConst: stack[sp - 1] *= p.consts[in.a]; break;
             case Op::Lt: --sp; stack[sp - 1] = stack[sp - 1] < stack[sp]; break;
             case Op::Le: --sp; stack[sp - 1] = stack[sp - 1] <= stack[sp]; break;
             case Op::Eq: --sp; stack[sp - 1] = stack[sp - 1] == stack[sp]; break;

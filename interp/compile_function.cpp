@@ -216,6 +216,13 @@ private:
         double a = 0, b = 0;
         if (is_const_range(start, rstart, a) && is_const(rstart, b))
             return fold(start, apply(op, a, b), 2);
+        if (is_const(rstart, b) && (op == "+" || op == "-" || op == "*")) {
+            // One instruction for `e op constant` (the same arithmetic, fewer dispatches).
+            const uint32_t k = p_.code[rstart].a;
+            p_.code.resize(rstart);
+            --depth_;
+            return emit({op == "+" ? Op::AddConst : op == "-" ? Op::SubConst : Op::MulConst, 0, 0, k}, 0);
+        }
         emit({op_of(op)}, -1);
     }
     static Op op_of(const std::string& op) {
