@@ -10,19 +10,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "function/internal_noise.hpp"
+
 namespace lumen::fn {
-namespace detail {
-
-// In internal_noise.cpp: C's (int) conversion, and the noise functions at point p with the
-// parameters after x, y, z.
-int to_int(double v);
-double noise3d(const glm::dvec3& p, int scene_generator);
-double noise_generator(const glm::dvec3& p, const double* params);
-double hetero_mf(const glm::dvec3& p, const double* params);
-double ridge(const glm::dvec3& p, const double* params);
-double ridged_mf(const glm::dvec3& p, const double* params);
-
-}  // namespace detail
 
 namespace {
 

@@ -1,6 +1,8 @@
 // The noise internal functions (internal.cpp's table calls them): f_noise3d, f_noise_generator
 // and the fractal noises f_hetero_mf, f_ridge and f_ridged_mf, in POV-Ray's order of
 // operations.
+#include "function/internal_noise.hpp"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -10,14 +12,6 @@
 #include "noise/noise.hpp"
 
 namespace lumen::fn::detail {
-
-// Declared where internal.cpp uses them.
-int to_int(double v);
-double noise3d(const glm::dvec3& p, int scene_generator);
-double noise_generator(const glm::dvec3& p, const double* params);
-double hetero_mf(const glm::dvec3& p, const double* params);
-double ridge(const glm::dvec3& p, const double* params);
-double ridged_mf(const glm::dvec3& p, const double* params);
 
 namespace {
 
