@@ -65,7 +65,7 @@ double pov_max(double running, double next) { return next > running ? next : run
 double run(const Program& p, const double* args, const Context& context, int component,
            int depth) {
     double stack[kMaxStack];
-    double locals[16];
+    double locals[kMaxLocals];
     int sp = 0;
     const Instr* code = p.code.data();
     const size_t n = p.code.size();

@@ -25,8 +25,9 @@ struct Context {
 
 // The deepest chain of calls between compiled functions (POV-Ray's own limit is 1024).
 inline constexpr int kMaxCallDepth = 1024;
-// The deepest stack one program may need (the compiler refuses deeper expressions).
+// The deepest stack one program may need, and its locals (the compiler refuses more).
 inline constexpr int kMaxStack = 256;
+inline constexpr int kMaxLocals = 16;
 
 // The function's value at `args` (program.params of them; the compiler checks counts). For a
 // vector function, component `component`.

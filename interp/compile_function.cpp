@@ -40,7 +40,6 @@ constexpr Math2Name kMath2[] = {
     {"atan2", fn::Math2::Atan2}, {"pow", fn::Math2::Pow}, {"mod", fn::Math2::Mod},
     {"div", fn::Math2::Div}};
 
-constexpr int kMaxLocals = 16;
 
 class Compiler {
 public:
@@ -103,10 +102,19 @@ private:
         depth_ -= pushed;
         constant(v);
     }
+    // Locals are taken for the code of one call (pow's temporaries, select's test, sum's
+    // counter) and given back after it (Scope), so only nesting uses them up.
     int new_local(SourceLoc loc) {
-        if (p_.locals >= kMaxLocals) fail(loc, "too many nested sum() and prod() calls");
-        return p_.locals++;
+        if (in_use_ >= fn::kMaxLocals) fail(loc, "too many nested sum(), prod() and select() calls");
+        p_.locals = std::max(p_.locals, in_use_ + 1);
+        return in_use_++;
     }
+    struct Scope {
+        Compiler& c;
+        int saved;
+        explicit Scope(Compiler& compiler) : c(compiler), saved(compiler.in_use_) {}
+        ~Scope() { c.in_use_ = saved; }
+    };
 
     void expr(const ast::Node& e) {
         loc_ = e.loc;
@@ -397,6 +405,7 @@ private:
                 return constant(1);
             }
             if (c >= 2 && c <= 8 && c == std::trunc(c)) {
+                Scope scope(*this);
                 p_.code.resize(rstart);
                 --depth_;
                 const uint32_t t = uint32_t(new_local(e.loc));
@@ -447,6 +456,7 @@ private:
             p_.code[to_end].a = uint32_t(p_.code.size());
             return;
         }
+        Scope scope(*this);
         const uint32_t t = uint32_t(new_local(e.loc));
         expr(*e.children[0]);
         emit({Op::SetLocal, 0, 0, t}, -1);
@@ -477,6 +487,7 @@ private:
         const ast::Node& var = *e.children[0];
         if (var.kind != ast::Kind::Ident) fail(var.loc, "expected the name of the loop variable");
         const bool product = e.text == "prod";
+        Scope scope(*this);
         const uint32_t i = uint32_t(new_local(e.loc)), limit = uint32_t(new_local(e.loc)),
                        acc = uint32_t(new_local(e.loc));
         expr(*e.children[1]);
@@ -514,6 +525,7 @@ private:
     std::vector<std::string> params_;
     std::vector<Local> locals_;
     int depth_ = 0;
+    int in_use_ = 0;  // locals taken
     SourceLoc loc_;
 };
 

@@ -60,6 +60,20 @@ TEST_F(CompiledFunctionTest, MathCallsCapturedValuesAndInternals) {
     EXPECT_TRUE(std::isnan(number("N(-1, 0, 0)")));
 }
 
+// Each pow(e, 2..8) and select(a, b, c, d) takes a local only while its code runs: a long
+// body of them compiles (the VM has 16 locals).
+TEST_F(CompiledFunctionTest, TemporariesAreGivenBack) {
+    std::string body = "0";
+    for (int i = 0; i < 40; ++i) body += " + pow(x, 4) + select(y, 1, 2, 3)";
+    run("#declare F = function { " + body + " }\n");
+    EXPECT_DOUBLE_EQ(number("F(2, 0, 0)"), 40 * (16 + 2));
+    // Nesting does use them up: six sums take 18 of the 16.
+    std::string nested = "1";
+    for (char v : std::string("abcdef")) nested = std::string("sum(") + v + ", 0, 0, " + nested + ")";
+    EXPECT_NE(error_of("#declare G = function { " + nested + " }").find("too many nested"),
+              std::string::npos);
+}
+
 TEST_F(CompiledFunctionTest, LocatedErrorsForWhatFunctionsCannotDo) {
     EXPECT_EQ(error_of("#declare F = function { x ? 1 : 2 }"),
               "test.pov:1:25: error: '? :' is not available in functions (use select())");
