@@ -3,4 +3,4 @@ parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 sphere { 0, 1 pigment { granite } photons { target } }
 sphere { 0, 1 hollow interior { media { emission 0.5 } } }
 camera { fisheye angle 180 }
-union { isosurface { function { x } } sphere { 0, 1 } }
+union { lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 } sphere { 0, 1 } }
