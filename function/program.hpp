@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "function/spline.hpp"
+
 namespace lumen::fn {
 
 enum class Op : uint8_t {
@@ -34,6 +36,7 @@ enum class Op : uint8_t {
     Call,       // pop b arguments, push callees[a]'s result (component c for vectors)
     External,   // pop x, y, z: push member c of externals[a] there (Host)
     Transform,  // pop x, y, z: push member c of the 3 x 4 matrix at consts[a..a+11] times them
+    Spline,     // pop t: push member c of splines[a] at t
 };
 
 // Members of a vector result: 0..4 the components (x/red .. transmit), then these.
@@ -80,10 +83,11 @@ struct Program {
     int components = 1; // results (1: a float function)
     std::vector<std::shared_ptr<const Program>> callees;  // functions it calls, as they were
     std::vector<External> externals;
+    std::vector<std::shared_ptr<const Spline>> splines;
     bool needs_host = false;  // it or a callee has externals
     template <class Self, class F> static void fields(Self& s, F&& f) {
         f("code", s.code), f("consts", s.consts), f("params", s.params), f("callees", s.callees),
-            f("externals", s.externals);
+            f("externals", s.externals), f("splines", s.splines);
     }
 };
 

@@ -127,6 +127,11 @@ double run(const Program& p, const double* args, const Context& context, int com
                 stack[sp++] = c < 3 ? out[c] : 0;
                 break;
             }
+            case Op::Spline: {
+                const std::array<double, 5> v = p.splines[in.a]->at(stack[sp - 1]);
+                stack[sp - 1] = member(v.data(), in.c == kMemberAsked ? component : in.c);
+                break;
+            }
             case Op::Call: {
                 sp -= in.b;
                 const Program& callee = *p.callees[in.a];

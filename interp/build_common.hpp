@@ -126,6 +126,9 @@ scene::ObjectPtr build_height_field(ItemCursor& cur);  // build_height_field.cpp
 scene::ObjectPtr build_julia_fractal(ItemCursor& cur);  // build_julia_fractal.cpp
 scene::ObjectPtr build_sphere_sweep(ItemCursor& cur);  // build_sphere_sweep.cpp
 scene::ObjectPtr build_isosurface(ItemCursor& cur);  // build_isosurface.cpp
+// build_spline.cpp: a spline block's entries, and the type a keyword names.
+std::shared_ptr<const fn::Spline> build_spline(ItemCursor& cur);
+std::optional<fn::SplineType> spline_type(std::string_view word);
 scene::ObjectPtr unsupported_object(const scene::Unsupported& u);
 bool is_unsupported_shape(const std::string& keyword);
 // Reads the object modifiers that follow a shape's own arguments. `extra` handles

@@ -352,6 +352,9 @@ private:
         if (last.op == Op::External) {
             p_.externals.push_back(callee.externals[last.a]);
             last.a = uint32_t(p_.externals.size() - 1);
+        } else if (last.op == Op::Spline) {
+            p_.splines.push_back(callee.splines[last.a]);
+            last.a = uint32_t(p_.splines.size() - 1);
         } else if (last.op == Op::Transform) {
             const uint32_t at = uint32_t(p_.consts.size());
             p_.consts.insert(p_.consts.end(), callee.consts.begin() + last.a,
@@ -541,6 +544,19 @@ fn::ProgramPtr Evaluator::compile_vector_function(const ast::Node& block) {
     auto p = std::make_shared<fn::Program>();
     for (uint32_t i = 0; i < 3; ++i) p->code.push_back({Op::Arg, 0, 0, i});
     p->max_stack = 3;
+    if (body.text == "spline") {  // one parameter, t
+        const Value v = eval(body);
+        const auto* f = v.is<std::shared_ptr<const FunctionValue>>()
+                            ? v.as<std::shared_ptr<const FunctionValue>>().get() : nullptr;
+        if (!f || !f->spline) throw LumenError(body.loc, "expected a spline");
+        p->code.resize(1);
+        p->params = 1;
+        p->max_stack = 1;
+        p->splines.push_back(f->spline);
+        p->code.push_back({Op::Spline, fn::kMemberAsked, 1, 0});
+        p->components = f->spline->terms;
+        return p;
+    }
     if (body.text == "transform") {
         const Value v = eval(body);
         if (!v.is<std::shared_ptr<const scene::Transform>>())

@@ -18,15 +18,17 @@ TEST_F(FunctionTest, FunctionsWithNamedAndDefaultParameters) {
 
 TEST_F(FunctionTest, UnevaluableFunctionsGiveErrors) {
     run("#declare P = function { pigment { rgb 1 } }\n"
-        "#declare S = function { spline { linear_spline 0, <0, 0, 0>, 1, <1, 1, 1> } }\n"
+        "#declare S = function { spline { spline { linear_spline 0, <0, 0, 0>, 1, <1, 1, 1> } } }\n"
         "#declare I = function { internal(61) }\n"
         "#declare F = function(a) { a }\n");
     // Without the renderer (these tests have none), pigment functions cannot run.
     EXPECT_EQ(expr_error("P(1, 2, 3)"),
               "expr:1:1: error: cannot evaluate function 'P' here: pigment and pattern functions "
               "need the renderer");
-    EXPECT_EQ(expr_error("S(1, 2, 3)"),
-              "expr:1:1: error: cannot evaluate function 'S' here: 'spline' functions are not supported");
+    EXPECT_EQ(expr_error("S(1, 2, 3)"), "expr:1:1: error: function 'S' takes 1 argument(s), found 3");
+    EXPECT_EQ(error_of("#declare M = function { media { } }"),
+              "test.pov:1:25: error: a function's body is an expression or a pigment, pattern, "
+              "transform or spline block, not 'media'");
     EXPECT_EQ(expr_error("I(1, 2, 3)"), "expr:1:1: error: function 'I' takes 4 argument(s), found 3");
     EXPECT_EQ(expr_error("F(1, 2)"), "expr:1:1: error: function 'F' takes 1 argument(s), found 2");
 }

@@ -107,6 +107,7 @@ public:
     Value call_macro_value(const ast::Node& macro, const ast::Node& call);
     // A user-defined function called in an expression (user_functions.cpp).
     Value call_function(const FunctionValue& fn, const ast::Node& call);
+    Value call_spline(const fn::Spline& spline, const ast::Node& call);
     // A `function { }` block's body compiled (compile_function.cpp); located errors.
     fn::ProgramPtr compile_function(const ast::Node& block);
     // `function { pigment | pattern | transform { } }`.

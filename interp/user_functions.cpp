@@ -2,6 +2,7 @@
 // the program compiled at its declaration (compile_function.cpp) runs in the same VM the
 // renderer uses, so a function has one meaning wherever it is called. Pattern, pigment and
 // spline functions are not compiled and give an error here.
+#include "interp/build_common.hpp"
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
 
@@ -10,6 +11,7 @@ namespace lumen::interp {
 fn::Context Evaluator::function_context() const { return ctx.function_context(); }
 
 Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
+    if (fn.spline) return call_spline(*fn.spline, call);
     if (!fn.program) {
         const std::string why = fn.keyword != "function" ? "only functions can be called in expressions"
                                                          : fn.why_not;
@@ -33,6 +35,26 @@ Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
     for (int c = 0; c < program.components; ++c)
         v.c.push_back(fn::evaluate(program, args, function_context(), c));
     return Value{std::move(v), call.loc};
+}
+
+// S(t) or S(t, linear_spline | quadratic_spline | cubic_spline | natural_spline): the spline's
+// value, a vector of its `terms` components (a float spline gives <v, v>).
+Value Evaluator::call_spline(const fn::Spline& spline, const ast::Node& call) {
+    const size_t argc = call.children.size();
+    if (argc != 1 && argc != 2)
+        throw LumenError(call.loc, "spline '" + call.text + "' takes t and optionally a spline type");
+    fn::SplineType type = spline.type;
+    if (argc == 2) {
+        const ast::Node& kind = *call.children[1];
+        const auto named = kind.kind == ast::Kind::Ident ? spline_type(kind.text) : std::nullopt;
+        if (!named)
+            throw LumenError(kind.loc, "expected linear_spline, quadratic_spline, cubic_spline or "
+                                       "natural_spline");
+        type = *named;
+    }
+    const std::array<double, 5> v = spline.at(eval_float(*call.children[0]), type);
+    budget.step(call.loc);
+    return Value{VecN{std::vector<double>(v.begin(), v.begin() + spline.terms)}, call.loc};
 }
 
 double Evaluator::eval_at(const ast::Node& expr, double x, double y, double z) {

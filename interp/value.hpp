@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "function/program.hpp"
+#include "function/spline.hpp"
 #include "parser/ast.hpp"
 #include "scene/scene.hpp"
 
@@ -118,6 +119,7 @@ struct FunctionValue {
     std::string keyword;
     fn::ProgramPtr program;  // compiled where declared; null for the forms lumen cannot run
     std::string why_not;     // then: the feature, for the error where it is used
+    std::shared_ptr<const fn::Spline> spline;  // a `spline { }` (called as S(t) in SDL)
 };
 
 }  // namespace lumen::interp

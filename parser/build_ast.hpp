@@ -134,6 +134,7 @@ using K = ast::Kind;
 LUMEN_NODE(number, makes<K::Number, finish::number>);
 LUMEN_NODE(string_literal, makes<K::String, finish::string>);
 LUMEN_NODE(ident, makes<K::Ident, finish::text>);
+LUMEN_NODE(spline_type_arg, makes<K::Ident, finish::text>);  // read by a spline call
 LUMEN_NODE(paren, nests_only);
 LUMEN_NODE(vector, makes<K::Vector, finish::keep, true>);
 LUMEN_NODE(call_name, token<>);

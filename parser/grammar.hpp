@@ -56,6 +56,10 @@ inline bool plain_keyword(std::string_view w) {
            !is_rgb_word(w);
 }
 inline bool unreserved_word(std::string_view w) { return !is_reserved(w); }
+inline bool spline_type_word(std::string_view w) {
+    return w == "linear_spline" || w == "quadratic_spline" || w == "cubic_spline" ||
+           w == "natural_spline";
+}
 inline bool reserved_word(std::string_view w) { return is_reserved(w); }
 
 // Scanners shared by the comment/string rules and the raw macro-body scanner. Each takes a
@@ -159,8 +163,9 @@ struct block;
 struct array_decl;
 struct array_init;
 
-// call_arg := block | array_decl | expression
-struct call_arg : sor<block, array_decl, plain_expression> {};
+// call_arg := block | array_decl | expression | spline type (`S(t, cubic_spline)`)
+struct spline_type_arg : word_if<spline_type_word> {};
+struct call_arg : sor<block, array_decl, plain_expression, spline_type_arg> {};
 struct call_name : word_if<user_or_expression_word> {};
 // call := name '(' [call_arg {[','] call_arg}] ')'
 struct call : seq<call_name, sep, one<'('>, sep, opt<call_arg, star<element_sep, call_arg>>,
