@@ -72,6 +72,7 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
                                                [&](double f) { bar.update(f); }, encode_block);
     const double render_seconds = seconds_since(start);
     bar.finish();
+    for (const Diagnostic& d : compiled.geometry().shape_warnings()) print_diagnostic(d);
     if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
     if (encoder) encoder->write(frame.output);
     else if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);

@@ -281,6 +281,17 @@ size_t Geometry::primitive_count() const { return impl_->primitives; }
 
 const std::vector<PlacedObject>& Geometry::placed_objects() const { return impl_->placed; }
 
+std::vector<Diagnostic> Geometry::shape_warnings() const {
+    std::vector<Diagnostic> out;
+    for (const Node& n : impl_->store.nodes) {
+        if (n.kind != NodeKind::Shape) continue;
+        if (const auto* iso = std::get_if<IsosurfaceShape>(&impl_->store.shapes[n.shape]))
+            if (auto message = gradient_warning(*iso))
+                out.push_back({Severity::Warning, n.object ? n.object->loc : SourceLoc{}, *message, {}, {}});
+    }
+    return out;
+}
+
 namespace {
 
 bool closed_shape(const scene::Object& o) {

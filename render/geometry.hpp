@@ -1,7 +1,9 @@
 // All the scene's objects behind one intersection interface (shapes, CSG, bounding, BVH).
 #pragma once
 #include <memory>
+#include <vector>
 
+#include "base/diagnostics.hpp"
 #include "render/intersector.hpp"
 #include "scene/scene.hpp"
 
@@ -59,6 +61,9 @@ public:
 
     size_t primitive_count() const;
     const std::vector<PlacedObject>& placed_objects() const;
+    // What the shapes report once a render is done (an isosurface's max_gradient, as POV-Ray
+    // warns), located at their objects.
+    std::vector<Diagnostic> shape_warnings() const;
     // The primitives of every opaque closed object that `eye` is outside of (shapes with an
     // inside, and CSG made only of such): a ray that meets one of their surfaces from behind
     // started inside solid matter, where nothing can see.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/geometric.hpp>
 
@@ -20,6 +21,7 @@ struct Search {
     double len;       // |d|
     double g;         // max_gradient (raised by `evaluate`)
     double sign = 1;  // +1: looking for V < 0 (entering); -1: for V > 0
+    double found = 0;  // the steepest |f(b) - f(a)| per object-space unit met
 
     double V(double t) const {
         const glm::dvec3 p = r.at(t);
@@ -33,11 +35,12 @@ struct Search {
     // accuracy) whose end value is negative.
     bool bisect(double ta, double fa, double tb, double fb, double dt, double w, double inv,
                 double& root) {
+        const double slope = std::fabs(fb - fa) * inv;
+        found = std::max(found, slope);
         if (s.iso.evaluate) {
             const glm::dvec3 e = *s.iso.evaluate;
-            const double found = std::fabs(fb - fa) * inv;
-            if (g < found * e.y) {
-                g = found * e.y * e.y;
+            if (g < slope * e.y) {
+                g = slope * e.y * e.y;
                 dt = g * len * w;
             }
         }
@@ -185,7 +188,36 @@ int isosurface_hits(const IsosurfaceShape& s, const LocalRay& r, IsoHit* hits) {
         ++n;
     }
     std::sort(hits, hits + count, [](const IsoHit& a, const IsoHit& b) { return a.t < b.t; });
+    // One shared update per ray, and only when the ray met a steeper slope.
+    std::atomic<double>& shared = *s.gradient_found;
+    double seen = shared.load(std::memory_order_relaxed);
+    while (search.found > seen &&
+           !shared.compare_exchange_weak(seen, search.found, std::memory_order_relaxed)) {
+    }
     return count;
+}
+
+std::optional<std::string> gradient_warning(const IsosurfaceShape& s) {
+    const double found = s.gradient_found->load(std::memory_order_relaxed);
+    const double G = s.iso.max_gradient;
+    if (s.iso.evaluate || !(found > 1e-10) || !(G > 1e-10)) return std::nullopt;
+    const double diff = G - found, prop = std::fabs(G / found);
+    char text[256];
+    if ((prop <= 0.9 && diff <= -0.5) || ((prop <= 0.95 || diff <= -0.1) && G < 10)) {
+        std::snprintf(text, sizeof text,
+                      "The maximum gradient found was %0.3f, but max_gradient of the isosurface was "
+                      "set to %0.3f. The isosurface may contain holes! Adjust max_gradient to get a "
+                      "proper rendering of the isosurface.", found, G);
+        return std::string(text);
+    }
+    if (diff >= 10 || (prop >= 1.1 && diff >= 0.5)) {
+        std::snprintf(text, sizeof text,
+                      "The maximum gradient found was %0.3f, but max_gradient of the isosurface was "
+                      "set to %0.3f. Adjust max_gradient to get a faster rendering of the isosurface.",
+                      found, G);
+        return std::string(text);
+    }
+    return std::nullopt;
 }
 
 bool intersect(const IsosurfaceShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {

@@ -4,6 +4,11 @@
 // of the first interval narrower than the accuracy whose end value is below the threshold.
 // Normals are forward differences with the accuracy as step.
 #pragma once
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <string>
+
 #include "function/vm.hpp"
 #include "render/shapes/shape.hpp"
 
@@ -13,7 +18,15 @@ struct IsosurfaceShape {
     scene::Isosurface iso;
     fn::Context context;
     bool valid = false;
+    // The steepest slope the searches met (per object-space unit), for the warning after the
+    // render; shared by the copies of the shape and raised by every thread.
+    std::shared_ptr<std::atomic<double>> gradient_found = std::make_shared<std::atomic<double>>(0);
 };
+
+// POV-Ray's warning after a render where max_gradient was too low (the surface may have holes)
+// or far too high (slow), from the slope the searches met; none with `evaluate`, or when the
+// slope found is as set.
+std::optional<std::string> gradient_warning(const IsosurfaceShape& s);
 
 IsosurfaceShape make_isosurface(const scene::Isosurface& s);
 bool intersect(const IsosurfaceShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
