@@ -106,6 +106,9 @@ std::shared_ptr<image::PovImage> function_image(ItemCursor& cur, const FunctionV
     const ast::Node& node = *fn.node;
     if (!node.flag || node.children.size() != 3 || !cur.ctx().eval_at) return nullptr;
     if (!fn.program || (fn.program->needs_host && !cur.ctx().function_host)) return nullptr;
+    if (fn.program->params > 3)
+        cur.fail(node.loc, "a height_field function is given x, y and z: this one takes " +
+                               std::to_string(fn.program->params) + " parameters");
     const bool colour = fn.program->components > 1;
     auto size = [&](const ast::Node& e) {
         const double v = cur.ctx().eval_at(e, 0, 0, 0);

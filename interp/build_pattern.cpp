@@ -167,6 +167,9 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
     }
     if (kw.kind == Item::Kind::Value && kw.value.is<std::shared_ptr<const FunctionValue>>()) {
         const FunctionValue& f = *kw.value.as<std::shared_ptr<const FunctionValue>>();
+        if (f.program && f.program->params > 3)
+            cur.fail(kw.loc, "a pattern function is given x, y and z: this one takes " +
+                                 std::to_string(f.program->params) + " parameters");
         pattern.kind = scene::pattern::Function{f.program};
         pattern.globals = cur.ctx().pattern_globals;
         if (!f.program) mark_unsupported(pattern, "pattern 'function' (" + f.why_not + ")", kw.loc);

@@ -88,6 +88,10 @@ TEST_F(CompiledFunctionTest, LocatedErrorsForWhatFunctionsCannotDo) {
               "test.pov:1:25: error: 'rand' cannot be c");
     EXPECT_EQ(error_of("#declare G = function(a) { a }\n#declare F = function { G(x, y) }"),
               "test.pov:2:25: error: function 'G' takes 1 argument(s), found 2");
+    // A pattern is given x, y, z only: a function of four parameters cannot be one.
+    EXPECT_EQ(error_of("#declare G = function(a, b, c, d) { a }\nsphere { 0, 1 pigment { G } }"),
+              "test.pov:2:25: error: a pattern function is given x, y and z: this one takes 4 "
+              "parameters");
 }
 
 }  // namespace
