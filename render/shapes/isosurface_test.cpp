@@ -73,7 +73,9 @@ TEST(Isosurface, WarnsAfterARenderWhenMaxGradientIsOff) {
             isosurface_hits(s, {{-3, -0.9 + 0.036 * i, 0.3}, {1, 0, 0}}, hits);
         const auto w = gradient_warning(s);
         EXPECT_EQ(bool(w), warns) << max_gradient;
-        if (w) EXPECT_EQ(w->find("may contain holes") != std::string::npos, holes) << *w;
+        if (w) {
+            EXPECT_EQ(w->find("may contain holes") != std::string::npos, holes) << *w;
+        }
     }
 }
 
