@@ -4,8 +4,8 @@
 // function patterns) alike. It sits below both, as noise/ does.
 //
 // The code is a stack machine: each instruction pops its operands and pushes its result.
-// POV-Ray's function language has no assignments; the only local is the counter of
-// sum()/prod(), kept in a numbered slot.
+// POV-Ray's function language has no assignments; numbered local slots hold sum()/prod()'s
+// counters and the compiler's temporaries (pow's base, select's test), at most kMaxLocals.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -31,7 +31,7 @@ enum class Op : uint8_t {
     Jump,       // pc = a
     JumpIfNotNeg,   // pop v: unless v < 0, pc = a  (select's first test; NaN jumps)
     JumpIfNotZero,  // pop v: unless v == 0, pc = a
-    JumpIfGreater,  // pop b, pop a: if !(a <= b), pc = a_target (the sum/prod loop test)
+    JumpIfGreater,  // pop y, pop x: unless x <= y, pc = a (the sum/prod loop test)
     Internal,   // pop b arguments (x, y, z, then parameters), push internal function a
     Call,       // pop b arguments, push callees[a]'s result (component c for vectors)
     External,   // pop x, y, z: push member c of externals[a] there (Host)
@@ -78,8 +78,6 @@ struct Program {
     std::vector<Instr> code;
     std::vector<double> consts;
     int params = 3;     // arguments expected (x, y, z when the function names none)
-    int locals = 0;     // sum/prod counters and limits
-    int max_stack = 0;  // the deepest the stack gets (checked by the VM's fixed stack)
     int components = 1; // results (1: a float function)
     std::vector<std::shared_ptr<const Program>> callees;  // functions it calls, as they were
     std::vector<External> externals;

@@ -57,7 +57,6 @@ TEST(FunctionVm, SelectRunsOnlyTheChosenBranch) {
 TEST(FunctionVm, SumLoopsWhileTheCounterIsAtMostTheLimit) {
     // sum(i, 0.5, x, i): locals 0 = i, 1 = limit, 2 = sum.
     Program p;
-    p.locals = 3;
     p.consts = {0.5, 0, 1};
     p.code = {op(Op::Const, 0), op(Op::SetLocal, 0), op(Op::Arg, 0), op(Op::SetLocal, 1),
               op(Op::Const, 1), op(Op::SetLocal, 2),

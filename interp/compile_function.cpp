@@ -83,7 +83,6 @@ private:
         if (depth_ > fn::kMaxStack)
             fail(loc_, "the function is nested too deeply (more than " +
                            std::to_string(fn::kMaxStack) + " pending values)");
-        p_.max_stack = std::max(p_.max_stack, depth_);
     }
     void constant(double v) {
         p_.consts.push_back(v);
@@ -101,11 +100,25 @@ private:
         depth_ -= pushed;
         constant(v);
     }
+    // When the code from `start` is `operands` constants and nothing else, replaces it by `op`
+    // applied to them, as the VM computes it (folding never differs from running); else false.
+    bool fold_constants(size_t start, Instr op, int operands) {
+        if (p_.code.size() != start + size_t(operands)) return false;
+        fn::Program p;
+        p.params = 0;
+        for (size_t i = start; i < p_.code.size(); ++i) {
+            if (p_.code[i].op != Op::Const) return false;
+            p.consts.push_back(p_.consts[p_.code[i].a]);
+            p.code.push_back({Op::Const, 0, 0, uint32_t(p.consts.size() - 1)});
+        }
+        p.code.push_back(op);
+        fold(start, fn::evaluate(p, {}), operands);
+        return true;
+    }
     // Locals are taken for the code of one call (pow's temporaries, select's test, sum's
     // counter) and given back after it (Scope), so only nesting uses them up.
     int new_local(SourceLoc loc) {
         if (in_use_ >= fn::kMaxLocals) fail(loc, "too many nested sum(), prod() and select() calls");
-        p_.locals = std::max(p_.locals, in_use_ + 1);
         return in_use_++;
     }
     struct Scope {
@@ -127,9 +140,7 @@ private:
                 const size_t start = p_.code.size();
                 expr(*e.children.at(0));
                 if (e.text != "-") return;
-                double v = 0;
-                if (is_const(start, v)) return fold(start, -v, 1);
-                emit({Op::Neg}, 0);
+                if (!fold_constants(start, {Op::Neg}, 1)) emit({Op::Neg}, 0);
                 return;
             }
             case Kind::Binary: return binary(e);
@@ -197,33 +208,23 @@ private:
         }
     }
     // Emits `op operand` after the left side (from `start`), folding constants.
-    void operand(const std::string& op, const ast::Node& right, size_t start) {
+    void operand(const std::string& written, const ast::Node& right, size_t start) {
         const size_t rstart = p_.code.size();
         expr(right);
         loc_ = right.loc;
-        double a = 0, b = 0;
-        const bool lconst = is_const_range(start, rstart, a), rconst = is_const(rstart, b);
+        double b = 0;
+        const bool rconst = is_const(rstart, b);
+        std::string op = written;
         if (op == "/" && rconst) {
             if (b == 0) fail(right.loc, "division by zero");
             // POV multiplies by the reciprocal of a constant divisor.
             p_.code.resize(rstart);
             --depth_;
             constant(1 / b);
-            return operand_code("*", start, rstart);
+            op = "*";
         }
-        if (lconst && rconst) return fold(start, apply(op, a, b), 2);
-        operand_code(op, start, rstart);
-    }
-    bool is_const_range(size_t start, size_t end, double& v) const {
-        if (end != start + 1 || p_.code[start].op != Op::Const) return false;
-        v = p_.consts[p_.code[start].a];
-        return true;
-    }
-    void operand_code(const std::string& op, size_t start, size_t rstart) {
-        double a = 0, b = 0;
-        if (is_const_range(start, rstart, a) && is_const(rstart, b))
-            return fold(start, apply(op, a, b), 2);
-        if (is_const(rstart, b) && (op == "+" || op == "-" || op == "*")) {
+        if (fold_constants(start, {op_of(op)}, 2)) return;
+        if (rconst && (op == "+" || op == "-" || op == "*")) {
             // One instruction for `e op constant` (the same arithmetic, fewer dispatches).
             const uint32_t k = p_.code[rstart].a;
             p_.code.resize(rstart);
@@ -246,21 +247,6 @@ private:
         if (op == "&") return Op::And;
         return Op::Or;
     }
-    // The operator on constants, as the VM computes it.
-    static double apply(const std::string& op, double a, double b) {
-        fn::Program p;
-        p.params = 0;
-        p.consts = {a, b};
-        p.code = {{Op::Const, 0, 0, 0}, {Op::Const, 0, 0, 1}, {op_of(op)}};
-        return fn::evaluate(p, {});
-    }
-    double run_const(const std::vector<Instr>& code, const std::vector<double>& consts) {
-        fn::Program p;
-        p.params = 0;
-        p.consts = consts;
-        p.code = code;
-        return fn::evaluate(p, {});
-    }
 
     void call(const ast::Node& e) {
         const std::string& n = e.text;
@@ -277,12 +263,11 @@ private:
                 const size_t start = p_.code.size();
                 expr(*e.children[0]);
                 double v = 0;
-                if (is_const(start, v)) {
-                    if ((m.f == fn::Math1::Ln || m.f == fn::Math1::Log) && v <= 0)
-                        fail(e.loc, "the logarithm of " + number(v) + " is undefined");
-                    return fold(start, run_const({{Op::Const, 0, 0, 0}, {Op::Math1, 0, 0, uint32_t(m.f)}}, {v}), 1);
-                }
-                return emit({Op::Math1, 0, 0, uint32_t(m.f)}, 0);
+                if (is_const(start, v) && (m.f == fn::Math1::Ln || m.f == fn::Math1::Log) && v <= 0)
+                    fail(e.loc, "the logarithm of " + number(v) + " is undefined");
+                const Instr in{Op::Math1, 0, 0, uint32_t(m.f)};
+                if (!fold_constants(start, in, 1)) emit(in, 0);
+                return;
             }
         for (const Math2Name& m : kMath2)
             if (n == m.name) {
@@ -290,12 +275,10 @@ private:
                 if (m.f == fn::Math2::Pow) return power(e);
                 const size_t start = p_.code.size();
                 expr(*e.children[0]);
-                const size_t rstart = p_.code.size();
                 expr(*e.children[1]);
-                double a = 0, b = 0;
-                if (is_const_range(start, rstart, a) && is_const(rstart, b))
-                    return fold(start, run_const({{Op::Const, 0, 0, 0}, {Op::Const, 0, 0, 1}, {Op::Math2, 0, 0, uint32_t(m.f)}}, {a, b}), 2);
-                return emit({Op::Math2, 0, 0, uint32_t(m.f)}, -1);
+                const Instr in{Op::Math2, 0, 0, uint32_t(m.f)};
+                if (!fold_constants(start, in, 2)) emit(in, -1);
+                return;
             }
         if (n == "min" || n == "max") {
             want(2, 1000);
@@ -396,10 +379,10 @@ private:
         expr(*e.children[0]);
         const size_t rstart = p_.code.size();
         expr(*e.children[1]);
-        double a = 0, c = 0;
-        const bool lconst = is_const_range(start, rstart, a);
+        const Instr pow{Op::Math2, 0, 0, uint32_t(fn::Math2::Pow)};
+        if (fold_constants(start, pow, 2)) return;
+        double c = 0;
         if (is_const(rstart, c)) {
-            if (lconst) return fold(start, std::pow(a, c), 2);
             if (c == 0) {
                 ev_.warn(e.loc, "zero power optimised to constant 1.0");
                 p_.code.resize(start);
@@ -415,7 +398,7 @@ private:
                 auto b = [&] { emit({Op::Local, 0, 0, t}, +1); };
                 auto mul = [&] { emit({Op::Mul}, -1); };
                 auto square = [&] { b(), b(), mul(); };   // b²
-                auto fourth = [&] { square(), square_top(t); };
+                auto fourth = [&] { square(), square_top(); };
                 switch (int(c)) {
                     case 2: square(); break;
                     case 3: square(), b(), mul(); break;
@@ -423,15 +406,15 @@ private:
                     case 5: fourth(), b(), mul(); break;
                     case 6: fourth(), square(), mul(); break;
                     case 7: fourth(), b(), mul(), square(), mul(); break;
-                    case 8: fourth(), square_top(t); break;
+                    case 8: fourth(), square_top(); break;
                 }
                 return;
             }
         }
-        emit({Op::Math2, 0, 0, uint32_t(fn::Math2::Pow)}, -1);
+        emit(pow, -1);
     }
     // Squares the value on top of the stack through a fresh local.
-    void square_top(uint32_t) {
+    void square_top() {
         const uint32_t s = uint32_t(new_local(loc_));
         emit({Op::SetLocal, 0, 0, s}, -1);
         emit({Op::Local, 0, 0, s}, +1);
@@ -447,15 +430,9 @@ private:
             fail(e.loc, "select() takes 3 or 4 arguments, found " + std::to_string(argc));
         if (argc == 3) {
             expr(*e.children[0]);
-            const size_t to_else = p_.code.size();
-            emit({Op::JumpIfNotNeg}, -1);
-            expr(*e.children[1]);
-            const size_t to_end = p_.code.size();
-            emit({Op::Jump}, 0);
-            --depth_;  // the else branch pushes the same one value
-            p_.code[to_else].a = uint32_t(p_.code.size());
+            const size_t end = branch(Op::JumpIfNotNeg, *e.children[1]);
             expr(*e.children[2]);
-            p_.code[to_end].a = uint32_t(p_.code.size());
+            p_.code[end].a = uint32_t(p_.code.size());
             return;
         }
         Scope scope(*this);
@@ -463,23 +440,24 @@ private:
         expr(*e.children[0]);
         emit({Op::SetLocal, 0, 0, t}, -1);
         emit({Op::Local, 0, 0, t}, +1);
-        const size_t to_zero = p_.code.size();
-        emit({Op::JumpIfNotNeg}, -1);
-        expr(*e.children[1]);
-        const size_t end1 = p_.code.size();
-        emit({Op::Jump}, 0);
-        --depth_;
-        p_.code[to_zero].a = uint32_t(p_.code.size());
+        const size_t end1 = branch(Op::JumpIfNotNeg, *e.children[1]);
         emit({Op::Local, 0, 0, t}, +1);
-        const size_t to_last = p_.code.size();
-        emit({Op::JumpIfNotZero}, -1);
-        expr(*e.children[2]);
-        const size_t end2 = p_.code.size();
-        emit({Op::Jump}, 0);
-        --depth_;
-        p_.code[to_last].a = uint32_t(p_.code.size());
+        const size_t end2 = branch(Op::JumpIfNotZero, *e.children[2]);
         expr(*e.children[3]);
         p_.code[end1].a = p_.code[end2].a = uint32_t(p_.code.size());
+    }
+    // One branch of a select: `then` behind the test `skip` (which pops the tested value and
+    // jumps past it), then a jump over what follows, whose index is returned to be pointed at
+    // the end.
+    size_t branch(Op skip, const ast::Node& then) {
+        const size_t test = p_.code.size();
+        emit({skip}, -1);
+        expr(then);
+        const size_t over = p_.code.size();
+        emit({Op::Jump}, 0);
+        --depth_;  // the next branch pushes the same one value
+        p_.code[test].a = uint32_t(p_.code.size());
+        return over;
     }
 
     // sum(i, a, b, E) / prod(i, a, b, E): i = a, a + 1, ... while i <= b (b evaluated once).

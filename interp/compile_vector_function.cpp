@@ -16,7 +16,6 @@ fn::ProgramPtr Evaluator::compile_vector_function(const ast::Node& block) {
     const ast::Node& body = *block.children.back();
     auto p = std::make_shared<fn::Program>();
     for (uint32_t i = 0; i < 3; ++i) p->code.push_back({Op::Arg, 0, 0, i});
-    p->max_stack = 3;
     if (body.text == "spline") {  // one parameter, t
         const Value v = eval(body);
         const auto* f = v.is<std::shared_ptr<const FunctionValue>>()
@@ -24,7 +23,6 @@ fn::ProgramPtr Evaluator::compile_vector_function(const ast::Node& block) {
         if (!f || !f->spline) throw LumenError(body.loc, "expected a spline");
         p->code.resize(1);
         p->params = 1;
-        p->max_stack = 1;
         p->splines.push_back(f->spline);
         p->code.push_back({Op::Spline, fn::kMemberAsked, 1, 0});
         p->components = f->spline->terms;
