@@ -5,6 +5,7 @@
 // and set back to their defaults, max_trace kept within 1..10.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "interp/build_common.hpp"
 
@@ -36,8 +37,9 @@ void read_container(ItemCursor& cur, const BlockValue& block, scene::Isosurface&
 double positive_or_default(ItemCursor& cur, const Item& kw, double fallback) {
     const double v = cur.expect_float(kw.keyword);
     if (v > 0) return v;
-    cur.warn(kw.loc, "an isosurface's " + kw.keyword + " must be above 0: using " +
-                         (fallback == 0.001 ? std::string("0.001") : std::string("1.1")));
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", fallback);
+    cur.warn(kw.loc, "an isosurface's " + kw.keyword + " must be above 0: using " + text);
     return fallback;
 }
 
@@ -48,7 +50,7 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur) {
     if (!cur.next_is<std::shared_ptr<const FunctionValue>>())
         cur.fail(loc, "an isosurface starts with its function { ... }");
     const FunctionValue& f = *cur.next().value.as<std::shared_ptr<const FunctionValue>>();
-    if (!f.program) return unsupported_object({"isosurface of a " + f.why_not.substr(0, f.why_not.find(" functions")) + " function", loc});
+    if (!f.program) return unsupported_object({"isosurface of a " + f.keyword, loc});  // a spline
     if (f.program->params != 3)
         cur.fail(loc, "an isosurface's function takes x, y and z, not " +
                           std::to_string(f.program->params) + " parameters");

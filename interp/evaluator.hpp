@@ -108,6 +108,8 @@ public:
     // A user-defined function called in an expression (user_functions.cpp).
     Value call_function(const FunctionValue& fn, const ast::Node& call);
     Value call_spline(const fn::Spline& spline, const ast::Node& call);
+    // A `function { }` or `spline { }` block as a FunctionValue (user_functions.cpp).
+    Value function_block(const ast::Node& block);
     // A `function { }` block's body compiled (compile_function.cpp); located errors.
     fn::ProgramPtr compile_function(const ast::Node& block);
     // `function { pigment | pattern | transform { } }`.

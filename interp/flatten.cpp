@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <string_view>
 
-#include "interp/build_common.hpp"
 #include "interp/evaluator.hpp"
 #include "parser/parser.hpp"
 
@@ -151,29 +150,7 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
 
 Value Evaluator::eval_block(const ast::Node& block) {
     const std::string& kw = block.text;
-    if (kw == "function" || kw == "spline" || !block.params.empty()) {
-        FunctionValue f{&block, kw, nullptr, {}, nullptr};
-        if (kw == "spline") {
-            BlockValue bv{kw, flatten_sealed(block.children), block.loc};
-            ItemCursor cur(ctx, bv);
-            f.spline = build_spline(cur);
-            f.why_not = "a spline is called as S(t) in a scene, or through function { spline { S } }";
-        } else if (kw != "function") {
-            f.why_not = kw + " functions are not supported";
-        } else if (block.children.empty()) {
-            throw LumenError(block.loc, "a function needs a body");
-        } else if (const ast::Node& body = *block.children.back(); body.kind == ast::Kind::Block) {
-            if (body.text != "pigment" && body.text != "pattern" && body.text != "transform" &&
-                body.text != "spline")
-                throw LumenError(body.loc, "a function's body is an expression or a pigment, "
-                                           "pattern, transform or spline block, not '" +
-                                               body.text + "'");
-            f.program = compile_vector_function(block);
-        } else {
-            f.program = compile_function(block);
-        }
-        return Value{std::make_shared<const FunctionValue>(std::move(f)), block.loc};
-    }
+    if (kw == "function" || kw == "spline" || !block.params.empty()) return function_block(block);
     if (!is_supported_block(kw)) {
         if (parser::is_reserved_word(kw)) return Value{scene::Unsupported{kw, block.loc}, block.loc};
         throw LumenError(block.loc, "unknown keyword '" + kw + "'",

@@ -1,7 +1,8 @@
-// Calling a user-defined `function { ... }` from an expression (`#declare V = F(1, 2, 3);`):
-// the program compiled at its declaration (compile_function.cpp) runs in the same VM the
-// renderer uses, so a function has one meaning wherever it is called. Pattern, pigment and
-// spline functions are not compiled and give an error here.
+// `function { ... }` and `spline { ... }` blocks as values, and calling them from an expression
+// (`#declare V = F(1, 2, 3);`, `S(t)`): the program compiled at the declaration
+// (compile_function.cpp, compile_vector_function.cpp) runs in the same VM the renderer uses,
+// so a function has one meaning wherever it is called. Pigment and pattern functions need the
+// renderer's host (InterpOptions::function_host).
 #include "interp/build_common.hpp"
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
@@ -9,6 +10,31 @@
 namespace lumen::interp {
 
 fn::Context Evaluator::function_context() const { return ctx.function_context(); }
+
+Value Evaluator::function_block(const ast::Node& block) {
+    const std::string& kw = block.text;
+    FunctionValue f{&block, kw, nullptr, {}, nullptr};
+    if (kw == "spline") {
+        BlockValue bv{kw, flatten_sealed(block.children), block.loc};
+        ItemCursor cur(ctx, bv);
+        f.spline = build_spline(cur);
+        f.why_not = "a spline is called as S(t) in a scene, or through function { spline { S } }";
+    } else if (kw != "function") {
+        f.why_not = kw + " functions are not supported";
+    } else if (block.children.empty()) {
+        throw LumenError(block.loc, "a function needs a body");
+    } else if (const ast::Node& body = *block.children.back(); body.kind == ast::Kind::Block) {
+        if (body.text != "pigment" && body.text != "pattern" && body.text != "transform" &&
+            body.text != "spline")
+            throw LumenError(body.loc, "a function's body is an expression or a pigment, "
+                                       "pattern, transform or spline block, not '" +
+                                           body.text + "'");
+        f.program = compile_vector_function(block);
+    } else {
+        f.program = compile_function(block);
+    }
+    return Value{std::make_shared<const FunctionValue>(std::move(f)), block.loc};
+}
 
 Value Evaluator::call_function(const FunctionValue& fn, const ast::Node& call) {
     if (fn.spline) return call_spline(*fn.spline, call);
