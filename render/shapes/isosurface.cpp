@@ -14,6 +14,12 @@ namespace {
 
 constexpr double kFar = 2e10;  // POV-Ray's largest depth along a ray
 
+// The function at object-space point p.
+double F(const IsosurfaceShape& s, const glm::dvec3& p) {
+    const double a[3] = {p.x, p.y, p.z};
+    return fn::evaluate(*s.iso.function, a, s.context);
+}
+
 // One ray's search: the function along the ray and the gradient bound in use.
 struct Search {
     const IsosurfaceShape& s;
@@ -23,11 +29,7 @@ struct Search {
     double sign = 1;  // +1: looking for V < 0 (entering); -1: for V > 0
     double found = 0;  // the steepest |f(b) - f(a)| per object-space unit met
 
-    double V(double t) const {
-        const glm::dvec3 p = r.at(t);
-        const double a[3] = {p.x, p.y, p.z};
-        return fn::evaluate(*s.iso.function, a, s.context) - s.iso.threshold;
-    }
+    double V(double t) const { return F(s, r.at(t)) - s.iso.threshold; }
     double f(double t) const { return sign * V(t); }
 
     // POV's recursive bisection: an interval is split while the ends' values and the gradient
@@ -114,13 +116,9 @@ glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
     const scene::Isosurface& iso = s.iso;
     if (iso.sphere && std::fabs(glm::length(p - iso.center) - iso.radius) < 1e-10)
         return glm::normalize(p - iso.center);
-    auto F = [&](const glm::dvec3& q) {
-        const double a[3] = {q.x, q.y, q.z};
-        return fn::evaluate(*iso.function, a, s.context);
-    };
-    const double f0 = F(p), A = iso.accuracy;
-    const glm::dvec3 n(F(p + glm::dvec3(A, 0, 0)) - f0, F(p + glm::dvec3(0, A, 0)) - f0,
-                       F(p + glm::dvec3(0, 0, A)) - f0);
+    const double f0 = F(s, p), A = iso.accuracy;
+    const glm::dvec3 n(F(s, p + glm::dvec3(A, 0, 0)) - f0, F(s, p + glm::dvec3(0, A, 0)) - f0,
+                       F(s, p + glm::dvec3(0, 0, A)) - f0);
     if (n == glm::dvec3(0)) return {1, 0, 0};
     const glm::dvec3 u = glm::normalize(n);
     return std::isfinite(u.x + u.y + u.z) ? u : glm::dvec3(1, 0, 0);
@@ -242,8 +240,7 @@ bool inside(const IsosurfaceShape& s, const glm::dvec3& p) {
                p.y > iso.hi.y || p.z > iso.hi.z) {
         return false;
     }
-    const double a[3] = {p.x, p.y, p.z};
-    return fn::evaluate(*iso.function, a, s.context) <= iso.threshold;
+    return F(s, p) <= iso.threshold;
 }
 
 Aabb bounds(const IsosurfaceShape& s) {
