@@ -56,33 +56,40 @@ Value quadratic(const std::vector<Spline::Entry>& e, double t) {
     return parabola(e[i - 2], e[i - 1], e[i], t);
 }
 
-Value natural(const std::vector<Spline::Entry>& e, double t) {
-    const size_t i = segment(e, t);
-    if (i == 0) return e.front().v;
-    if (i == e.size()) return e.back().v;
+// The natural spline's second derivatives at the knots, per component: the tridiagonal system
+// with M_0 = M_{n-1} = 0, solved as POV-Ray solves it.
+std::vector<Value> natural_moments(const std::vector<Spline::Entry>& e) {
     const size_t n = e.size();
-    Value out;
-    std::vector<double> h(n - 1), b(n - 1), u(n), v(n), M(n, 0.0);
+    std::vector<Value> M(n, Value{});
+    if (n < 3) return M;
+    std::vector<double> h(n - 1), b(n - 1), u(n), v(n);
     for (int c = 0; c < 5; ++c) {
         for (size_t k = 0; k + 1 < n; ++k) {
             h[k] = e[k + 1].t - e[k].t;
             b[k] = (e[k + 1].v[c] - e[k].v[c]) / h[k];
         }
-        std::fill(M.begin(), M.end(), 0.0);
-        if (n > 2) {
-            u[1] = 2 * (h[0] + h[1]);
-            v[1] = 6 * (b[1] - b[0]);
-            for (size_t k = 2; k + 1 < n; ++k) {
-                u[k] = 2 * (h[k] + h[k - 1]) - h[k - 1] * h[k - 1] / u[k - 1];
-                v[k] = 6 * (b[k] - b[k - 1]) - h[k - 1] * v[k - 1] / u[k - 1];
-            }
-            for (size_t k = n - 2; k >= 1; --k) M[k] = (v[k] - h[k] * M[k + 1]) / u[k];
+        u[1] = 2 * (h[0] + h[1]);
+        v[1] = 6 * (b[1] - b[0]);
+        for (size_t k = 2; k + 1 < n; ++k) {
+            u[k] = 2 * (h[k] + h[k - 1]) - h[k - 1] * h[k - 1] / u[k - 1];
+            v[k] = 6 * (b[k] - b[k - 1]) - h[k - 1] * v[k - 1] / u[k - 1];
         }
-        const size_t j = i - 1;
-        const double s = t - e[j].t, hj = h[j];
-        out[c] = e[j].v[c] +
-                 s * (-(hj / 6) * (M[j + 1] + 2 * M[j]) + b[j] +
-                      s * (M[j] / 2 + s * (M[j + 1] - M[j]) / (6 * hj)));
+        for (size_t k = n - 2; k >= 1; --k) M[k][c] = (v[k] - h[k] * M[k + 1][c]) / u[k];
+    }
+    return M;
+}
+
+Value natural(const std::vector<Spline::Entry>& e, const std::vector<Value>& M, double t) {
+    const size_t i = segment(e, t);
+    if (i == 0) return e.front().v;
+    if (i == e.size()) return e.back().v;
+    const size_t j = i - 1;
+    const double hj = e[j + 1].t - e[j].t, s = t - e[j].t;
+    Value out;
+    for (int c = 0; c < 5; ++c) {
+        const double b = (e[j + 1].v[c] - e[j].v[c]) / hj;
+        out[c] = e[j].v[c] + s * (-(hj / 6) * (M[j + 1][c] + 2 * M[j][c]) + b +
+                                  s * (M[j][c] / 2 + s * (M[j + 1][c] - M[j][c]) / (6 * hj)));
     }
     return out;
 }
@@ -121,6 +128,8 @@ void Spline::add(double t, const Value& v, int components) {
     entries.insert(it, Entry{t, v});
 }
 
+void Spline::prepare() { moments = natural_moments(entries); }
+
 Value Spline::at(double t, SplineType kind) const {
     if (entries.empty()) return {};
     if (entries.size() == 1) return entries[0].v;
@@ -128,7 +137,10 @@ Value Spline::at(double t, SplineType kind) const {
         case SplineType::Linear: return linear(entries, t);
         case SplineType::Quadratic: return quadratic(entries, t);
         case SplineType::Cubic: return cubic(entries, t);
-        case SplineType::Natural: return natural(entries, t);
+        case SplineType::Natural:
+            // Prepared once (prepare()); a spline changed since is solved for this call alone.
+            return moments.size() == entries.size() ? natural(entries, moments, t)
+                                                    : natural(entries, natural_moments(entries), t);
     }
     return {};
 }

@@ -19,10 +19,14 @@ struct Spline {
     SplineType type = SplineType::Linear;
     std::vector<Entry> entries;  // sorted by t
     int terms = 2;               // components of a value: the most any entry was given (2..5)
+    std::vector<std::array<double, 5>> moments;  // the natural spline's, from prepare()
 
     // Adds an entry as POV-Ray does: a repeated t replaces the earlier value, but a repeat of
     // the largest t so far is dropped (POV-Ray's indexing).
     void add(double t, const std::array<double, 5>& v, int components);
+    // Solves the natural spline's system once, so that at() allocates nothing (call it after
+    // the last add).
+    void prepare();
     // The value at t by `type` (at least one entry; `terms` components are meaningful).
     std::array<double, 5> at(double t, SplineType type) const;
     std::array<double, 5> at(double t) const { return at(t, type); }

@@ -46,6 +46,7 @@ std::shared_ptr<const fn::Spline> build_spline(ItemCursor& cur) {
         spline->add(t, v, int(c.size()));
     }
     if (spline->entries.empty()) cur.fail(cur.block_loc(), "a spline needs at least one entry");
+    spline->prepare();
     return spline;
 }
 
