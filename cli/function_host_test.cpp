@@ -1,15 +1,13 @@
 // Pigment, pattern and transform functions called while parsing, evaluated by the renderer's
 // host (render/function_host.cpp), against POV-Ray 3.7.0.10: the expected lines are what
 // povray printed for the same scene with #debug (2026-12-05).
-#include <gtest/gtest.h>
-
-#include "base/diagnostics.hpp"
-#include "base/source.hpp"
-#include "interp/interpret.hpp"
+#include "interp/eval_test_support.hpp"
 #include "render/function_host.hpp"
 
 namespace lumen::cli {
 namespace {
+
+using FunctionHost = interp::testing::EvalTest;
 
 const char* const kScene = R"(#version 3.7;
 #include "functions.inc"
@@ -33,14 +31,10 @@ const char* const kPovRay = R"(0.44999998807907104 0.32499998807907104
 0.00000000000000000
 )";
 
-TEST(FunctionHost, PigmentPatternAndTransformFunctionsMatchPovRay) {
-    SourceManager sources;
-    interp::InterpOptions options;
+TEST_F(FunctionHost, PigmentPatternAndTransformFunctionsMatchPovRay) {
     options.function_host = render::shared_function_host();
-    std::string printed;
-    interp::interpret_text(sources, "functions.pov", kScene, options,
-                           [&](const Diagnostic& d) { printed += d.message; });  // #debug text
-    EXPECT_EQ(printed, kPovRay);
+    run(kScene);
+    EXPECT_EQ(debug_output(), kPovRay);
 }
 
 }  // namespace

@@ -1,14 +1,12 @@
 // Splines (function/spline.cpp): the four types, a float spline, a copy retyped and extended
 // (a repeated t replaces a value, except at the largest t) and a spline function, against
 // what POV-Ray 3.7.0.10 printed for the same scene with #debug (2026-12-05).
-#include <gtest/gtest.h>
+#include "interp/eval_test_support.hpp"
 
-#include "base/diagnostics.hpp"
-#include "base/source.hpp"
-#include "interp/interpret.hpp"
-
-namespace lumen::interp {
+namespace lumen::interp::testing {
 namespace {
+
+using Splines = EvalTest;
 
 const char* const kScene = R"(#version 3.7;
 #declare S = spline { linear_spline 0, <0,0,0>, 1, <1,2,0>, 2.5, <3,1,1>, 4, <2,-1,3>, 5, <0,0,0> }
@@ -75,29 +73,18 @@ const char* const kPovRay = R"(0.000000000000 0.000000000000 0.000000000000
 0.326010886470 8.447727665457
 )";
 
-TEST(Splines, FourTypesCopiesAndFunctionsMatchPovRay) {
-    SourceManager sources;
-    std::string printed;
-    interpret_text(sources, "splines.pov", kScene, InterpOptions{},
-                   [&](const Diagnostic& d) { printed += d.message; });  // #debug text
-    EXPECT_EQ(printed, kPovRay);
+TEST_F(Splines, FourTypesCopiesAndFunctionsMatchPovRay) {
+    run(kScene);
+    EXPECT_EQ(debug_output(), kPovRay);
 }
 
-TEST(Splines, CallErrorsAreLocated) {
-    SourceManager sources;
-    auto error = [&](const std::string& text) {
-        try {
-            interpret_text(sources, "t.pov", text, InterpOptions{});
-        } catch (const LumenError& e) {
-            return std::to_string(e.diag.loc.line) + ":" + std::to_string(e.diag.loc.column) + ": " +
-                   e.what();
-        }
-        return std::string();
-    };
-    EXPECT_EQ(error("#declare S = spline { }"), "1:14: a spline needs at least one entry");
-    EXPECT_EQ(error("#declare S = spline { 0, 1 }\n#declare V = S(0, 1);"),
-              "2:19: expected linear_spline, quadratic_spline, cubic_spline or natural_spline");
+TEST_F(Splines, CallErrorsAreLocated) {
+    EXPECT_EQ(error_of("#declare S = spline { }"),
+              "test.pov:1:14: error: a spline needs at least one entry");
+    EXPECT_EQ(error_of("#declare S = spline { 0, 1 }\n#declare V = S(0, 1);"),
+              "test.pov:2:19: error: expected linear_spline, quadratic_spline, cubic_spline or "
+              "natural_spline");
 }
 
 }  // namespace
-}  // namespace lumen::interp
+}  // namespace lumen::interp::testing
