@@ -239,6 +239,11 @@ const IniKey kKeys[] = {
          if (s.text.empty()) bad_value(s, "a folder");
          o.scene.library_paths.push_back(s.text);
      }},
+    {"Permitted_Path",  // lumen's: #fopen may also read and write under this folder
+     [](Options& o, const Setting& s) {
+         if (s.text.empty()) bad_value(s, "a folder");
+         o.scene.io_folders.push_back(s.text);
+     }},
     {"Declare", add_declare},
     {"Include_Ini",
      [](Options& o, const Setting& s) { read_ini_file(o, s.sources, s.text, s.loc, s.depth + 1); }},

@@ -126,6 +126,34 @@ TEST(ObjectQueries, TraceAndInsideMatchPovRay) {
     EXPECT_EQ(without_signed_zeros(printed), without_signed_zeros(kPovRay));
 }
 
+// POV-Ray turns its canonical cylinder onto the axis with one rotation, and that rotation's
+// round-off leaves a tiny normal component where the exact one is zero. Its sign is what a
+// scene prints with two decimals (language/trace.pov: "Normal: <-1.00,0.06,-0.00>"). Below,
+// components under 1e-3 are printed times 1e17; the expected lines are povray's.
+TEST(ObjectQueries, CylinderNormalsKeepPovRaysRoundOff) {
+    const char* scene = R"(#declare N = <9,9,9>;
+#macro C(V) str(select(abs(V) - 1e-3, V * 1e17, V), 0, 3) #end
+#macro T(O, F, D) #local P = trace(O, F, D, N); #debug concat(C(N.x), " ", C(N.y), " ", C(N.z), "\n") #end
+T(cylinder { <-1,0,-0.003>, <-1,0,0.11>, 0.5 }, <-1.499,2,0>, -y)
+T(cylinder { <0,0,1>, <0,0,0>, 1 }, <-0.499,2,0.5>, -y)
+T(cylinder { 0, <0,2,0>, 1 }, <2,0.3,0.5>, -x)
+T(cylinder { 0, <0,-2,0>, 1 }, <2,-0.3,0.5>, -x)
+T(cylinder { 0, <2,0,0>, 1 }, <0.5,-0.499,-2>, z)
+)";
+    SourceManager sources;
+    interp::InterpOptions options;
+    options.object_queries = render::make_object_queries();
+    std::string printed;
+    interp::interpret_text(sources, "cyl.pov", scene, options,
+                           [&](const Diagnostic& d) { printed += d.message; });
+    EXPECT_EQ(printed,
+              "-0.998 0.063 -0.774\n"
+              "-0.499 0.867 0.000\n"
+              "0.866 3.062 0.500\n"
+              "0.866 -3.062 0.500\n"
+              "-5.306 -0.499 -0.867\n");
+}
+
 TEST(ObjectQueries, WithoutARendererTraceIsAnError) {
     SourceManager sources;
     try {

@@ -196,7 +196,9 @@ TEST(IniOptions, DeclareFloatsAndStrings) {
 
 TEST(IniOptions, GammaVersionAndPaths) {
     const Options o = parse({"s.pov", "File_Gamma=2.2", "Version=3.7", "Library_Path=\"/a b\"",
-                             "Output_File_Name=x.png", "Input_File_Name=other.pov"});
+                             "Output_File_Name=x.png", "Input_File_Name=other.pov",
+                             "Permitted_Path=/data"});
+    EXPECT_EQ(o.scene.io_folders, std::vector<std::string>{"/data"});
     EXPECT_DOUBLE_EQ(o.image.file_gamma, 2.2);
     EXPECT_DOUBLE_EQ(*o.scene.version, 3.7);
     EXPECT_EQ(o.scene.library_paths.at(0), "/a b");

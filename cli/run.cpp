@@ -96,6 +96,9 @@ int run_frames(const Options& o, SourceManager& sources) {
         interp::InterpOptions scene_options = frame.scene;
         scene_options.object_queries = object_queries;  // trace() and inside()
         scene_options.function_host = render::shared_function_host();  // pigment functions
+        if (!frame.output.empty())  // #fopen may write beside the image
+            scene_options.io_folders.push_back(
+                std::filesystem::absolute(frame.output).parent_path().string());
         scene::Scene scene = interp::interpret_file(sources, o.input, scene_options, warn);
         warnings.flush();
         apply_radiosity_switch(scene, o.radiosity);

@@ -118,5 +118,25 @@ TEST_F(RunTest, HelpAndVersion) {
     EXPECT_EQ(out.rfind("lumen ", 0), 0u);
 }
 
+// #fopen may write beside the scene file and beside the output image, and nowhere else
+// outside the working folder: here the scene, the image and the working folder are apart.
+TEST_F(RunTest, UserFilesGoToTheScenesOrTheOutputFolder) {
+    for (const char* d : {"work", "scene", "out", "elsewhere"}) fs::create_directories(dir_ / d);
+    fs::current_path(dir_ / "work");
+    std::string scene = kScene;
+    for (const char* d : {"scene", "out"})
+        scene += "#fopen F \"" + (dir_ / d / "w.txt").string() + "\" write #fclose F\n";
+    write("scene/s.pov", scene);
+    EXPECT_EQ(run({"../scene/s.pov", "+W8", "+H8", "+O../out/img.png"}), 0);
+    EXPECT_TRUE(fs::exists(dir_ / "scene" / "w.txt"));
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "w.txt"));
+    write("scene/e.pov", std::string(kScene) + "#fopen F \"" +
+                             (dir_ / "elsewhere" / "w.txt").string() + "\" write\n");
+    EXPECT_NE(run({"../scene/e.pov", "+W8", "+H8", "+O../out/img.png"}), 0);
+    EXPECT_FALSE(fs::exists(dir_ / "elsewhere" / "w.txt"));
+    EXPECT_EQ(run({"../scene/e.pov", "+W8", "+H8", "-F", "Permitted_Path=../elsewhere"}), 0);
+    EXPECT_TRUE(fs::exists(dir_ / "elsewhere" / "w.txt"));
+}
+
 }  // namespace
 }  // namespace lumen::cli

@@ -81,12 +81,15 @@ TEST_F(FileIoTest, AFileWrittenAgainIsIncludedAfresh) {
 }
 
 TEST_F(FileIoTest, LocatedErrors) {
+    const std::string write_rule =
+        "(lumen writes user files only under the working folder, the scene's folder and the "
+        "output folder; Permitted_Path=FOLDER allows another)";
     EXPECT_EQ(error_of("#fopen F \"../out.txt\" write"),
-              "test.pov:1:10: error: IO Restrictions prohibit write access to '../out.txt' "
-              "(lumen writes only in the working folder)");
+              "test.pov:1:10: error: IO Restrictions prohibit write access to '../out.txt' " +
+                  write_rule);
     EXPECT_EQ(error_of("#fopen F \"/etc/lumen.txt\" write"),
-              "test.pov:1:10: error: IO Restrictions prohibit write access to '/etc/lumen.txt' "
-              "(lumen writes only in the working folder)");
+              "test.pov:1:10: error: IO Restrictions prohibit write access to '/etc/lumen.txt' " +
+                  write_rule);
     EXPECT_EQ(error_of("#fopen F \"nope.txt\" read"),
               "test.pov:1:10: error: cannot open user file 'nope.txt' (read)");
     EXPECT_EQ(error_of("#write (G, 1)"), "test.pov:1:9: error: 'G' is not an open file identifier");
@@ -97,6 +100,30 @@ TEST_F(FileIoTest, LocatedErrors) {
               "float, 3-D vector or string one, found a 2-component vector");
     EXPECT_EQ(error_of("#fopen F \"o.txt\" write #write (F, rgb 1)"),
               "test.pov:1:35: error: expected a string, float or vector, found a colour");
+}
+
+// Reading is refused outside the working folder, the permitted folders and the include
+// folders; a symbolic link cannot lead out; Permitted_Path (io_folders) opens a folder.
+TEST_F(FileIoTest, OnlyPermittedFoldersAreOpened) {
+    fs::create_directories(dir_ / "other");
+    std::ofstream(dir_ / "other" / "in.txt") << "5";
+    const std::string in = (dir_ / "other" / "in.txt").string();
+    const std::string out = (dir_ / "other" / "out.txt").string();
+    EXPECT_NE(error_of("#fopen D \"" + in + "\" read").find(
+                  "IO Restrictions prohibit read access to '" + in +
+                  "' (lumen reads user files only under the working folder, the scene's folder, "
+                  "the output folder and the library paths; Permitted_Path=FOLDER allows another)"),
+              std::string::npos);
+    fs::create_directory_symlink(dir_ / "other", "link");
+    EXPECT_NE(error_of("#fopen F \"link/out.txt\" write").find("prohibit write access"),
+              std::string::npos);
+    EXPECT_FALSE(fs::exists(out));
+    options.io_folders.push_back((dir_ / "other").string());
+    ev.reset();
+    run("#fopen D \"" + in + "\" read #read (D, V)\n#fopen F \"link/out.txt\" write #write (F, V) "
+        "#fclose F\n");
+    EXPECT_DOUBLE_EQ(num_var("V"), 5);
+    EXPECT_EQ(contents(out), "5");
 }
 
 }  // namespace

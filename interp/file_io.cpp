@@ -32,6 +32,32 @@ bool within(const fs::path& p, const fs::path& root) {
 
 fs::path normal(const fs::path& p) { return fs::absolute(p).lexically_normal(); }
 
+// Symbolic links resolved, so that a link inside an allowed folder cannot lead out of it.
+fs::path resolved(const fs::path& p) {
+    std::error_code ec;
+    fs::path r = fs::weakly_canonical(fs::absolute(p), ec);
+    return ec ? normal(p) : r;
+}
+
+// Where a user file may be opened: the working folder, `options.io_folders` and, for reading,
+// the include folders. Returns "" when allowed, else the message's explanation.
+std::string refusal(const fs::path& p, bool writing, const InterpOptions& options) {
+    std::vector<fs::path> roots{fs::current_path()};
+    for (const std::string& d : options.io_folders) roots.emplace_back(d);
+    if (!writing) {
+        for (const std::string& d : options.library_paths) roots.emplace_back(d);
+        if (options.default_include_path && !options.system_include_dir.empty())
+            roots.emplace_back(options.system_include_dir);
+    }
+    const fs::path target = resolved(p);
+    for (const fs::path& root : roots)
+        if (within(target, resolved(root))) return "";
+    return std::string("lumen ") + (writing ? "writes" : "reads") +
+           " user files only under the working folder, the scene's folder" +
+           (writing ? " and the output folder" : ", the output folder and the library paths") +
+           "; Permitted_Path=FOLDER allows another";
+}
+
 // ---- #read: the literals of a data file ----
 
 struct Reader {
@@ -217,6 +243,9 @@ std::shared_ptr<FileValue> Evaluator::open_file(const ast::Node& n) {
         }
         if (f->path.empty())
             throw LumenError(name_value.loc, "cannot open user file '" + name + "' (read)");
+        if (const std::string why = refusal(f->path, false, options_); !why.empty())
+            throw LumenError(name_value.loc,
+                             "IO Restrictions prohibit read access to '" + name + "' (" + why + ")");
         std::error_code ec;
         if (fs::file_size(f->path, ec) > kMaxReadBytes)
             throw LumenError(name_value.loc, "user file '" + name + "' is larger than 256 MiB");
@@ -226,9 +255,9 @@ std::shared_ptr<FileValue> Evaluator::open_file(const ast::Node& n) {
         f->text = ss.str();
     } else if (mode == "write" || mode == "append") {
         const fs::path p = normal(fs::path(name).is_absolute() ? fs::path(name) : cwd / name);
-        if (!within(p, cwd))
-            throw LumenError(name_value.loc, "IO Restrictions prohibit write access to '" + name +
-                                                 "' (lumen writes only in the working folder)");
+        if (const std::string why = refusal(p, true, options_); !why.empty())
+            throw LumenError(name_value.loc,
+                             "IO Restrictions prohibit write access to '" + name + "' (" + why + ")");
         f->writing = true;
         f->path = p.string();
         f->out = std::fopen(f->path.c_str(), mode == "write" ? "wb" : "ab");

@@ -2,6 +2,8 @@
 // top-level item handed to the scene builders.
 #include "interp/interpret.hpp"
 
+#include <filesystem>
+
 #include "interp/builders.hpp"
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
@@ -47,7 +49,10 @@ scene::Scene interpret_file(SourceManager& sources, const std::string& path,
                             const InterpOptions& options, const WarningSink& warn) {
     const SourceFile* file = sources.load(path);
     if (!file) throw LumenError(SourceLoc{}, "cannot read scene file '" + path + "'");
-    return run(sources, *file, options, warn);
+    InterpOptions with_scene_folder = options;  // user files may live beside the scene
+    with_scene_folder.io_folders.push_back(
+        std::filesystem::absolute(path).parent_path().string());
+    return run(sources, *file, with_scene_folder, warn);
 }
 
 scene::Scene interpret_text(SourceManager& sources, const std::string& name, const std::string& text,

@@ -23,6 +23,11 @@ struct InterpOptions {
     std::vector<std::string> library_paths;
     bool default_include_path = true;
     std::string system_include_dir = "/usr/share/povray-3.7/include";
+    // Folders, besides the working folder and the scene file's folder, where #fopen may read
+    // and write (with their subfolders): the output folder and each Permitted_Path. Reading
+    // may also use the library paths. POV-Ray 3.7 on Unix checks nothing; lumen refuses the
+    // rest with a located error.
+    std::vector<std::string> io_folders;
     // Declare=NAME=value: a float, or a string when quoted.
     struct Declare { std::string name; std::optional<double> number; std::string text; };
     std::vector<Declare> declares;

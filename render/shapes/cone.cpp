@@ -12,14 +12,29 @@ namespace lumen::render {
 
 namespace {
 
-// Rows are an orthonormal basis whose third vector is the unit axis.
-glm::dmat3 frame_for(const glm::dvec3& axis) {
-    glm::dvec3 w = axis;
-    glm::dvec3 helper = std::abs(w.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    glm::dvec3 u = glm::normalize(glm::cross(helper, w));
-    glm::dvec3 v = glm::cross(w, u);
-    // glm is column-major: the transpose of the column matrix (u v w) maps into the frame.
-    return glm::transpose(glm::dmat3(u, v, w));
+// Rows are an orthonormal basis whose third vector is the unit axis. The first two are POV-Ray's:
+// its canonical shape is turned onto the axis by one rotation (about (a.y, -a.x, 0) by
+// acos(-a.z), about x within 1e-10 of the z axis). Round-off of that rotation shows in normals
+// that should have an exact zero: a cylinder along +z reports a normal z of about -1e-17 *
+// normal.y, which `trace()` users print (language/trace.pov shows "-0.00"); probed with
+// POV-Ray 3.7's trace().
+glm::dmat3 frame_for(const glm::dvec3& a) {
+    glm::dvec3 turn_axis;
+    double angle;
+    if (std::abs(a.z) > 1.0 - 1e-10) {
+        turn_axis = {1, 0, 0};
+        angle = a.z > 0 ? std::acos(-1.0) : 0.0;
+    } else {
+        turn_axis = glm::normalize(glm::dvec3(a.y, -a.x, 0));
+        angle = std::acos(-a.z);
+    }
+    // Rodrigues: R = cos I + sin [k]x + (1 - cos) k k^T; u and v are R's first two columns.
+    const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
+    const glm::dvec3& k = turn_axis;
+    glm::dvec3 u{t * k.x * k.x + c, t * k.x * k.y + s * k.z, t * k.x * k.z - s * k.y};
+    glm::dvec3 v{t * k.x * k.y - s * k.z, t * k.y * k.y + c, t * k.y * k.z + s * k.x};
+    // glm is column-major: the transpose of the column matrix (u v a) maps into the frame.
+    return glm::transpose(glm::dmat3(u, v, a));
 }
 
 ConeShape make_axis_shape(glm::dvec3 base, glm::dvec3 cap, double r0, double r1, bool open) {
