@@ -125,7 +125,12 @@ scene::ObjectPtr build_blob(ItemCursor& cur);  // build_blob.cpp
 scene::ObjectPtr build_height_field(ItemCursor& cur);  // build_height_field.cpp
 scene::ObjectPtr build_julia_fractal(ItemCursor& cur);  // build_julia_fractal.cpp
 scene::ObjectPtr build_sphere_sweep(ItemCursor& cur);  // build_sphere_sweep.cpp
-scene::ObjectPtr build_isosurface(ItemCursor& cur);  // build_isosurface.cpp
+// build_isosurface.cpp: the isosurface, and what parametric shares with it: contained_by,
+// and accuracy and max_gradient above 0 (else POV-Ray's warning and the default).
+scene::ObjectPtr build_isosurface(ItemCursor& cur);
+void read_container(ItemCursor& cur, const BlockValue& block, scene::Container& c);
+double positive_or_default(ItemCursor& cur, const Item& kw, double fallback, const char* shape);
+scene::ObjectPtr build_parametric(ItemCursor& cur);  // build_parametric.cpp
 // build_spline.cpp: a spline block's entries, and the type a keyword names.
 std::shared_ptr<const fn::Spline> build_spline(ItemCursor& cur);
 std::optional<fn::SplineType> spline_type(std::string_view word);

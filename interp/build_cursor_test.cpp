@@ -86,7 +86,7 @@ TEST(BuildBlock, DataBlocksComeBackAsBlockValues) {
     ASSERT_TRUE(v.is<std::shared_ptr<const BlockValue>>());
     EXPECT_EQ(v.as<std::shared_ptr<const BlockValue>>()->keyword, "vertex_vectors");
     EXPECT_TRUE(is_supported_block("reflection"));
-    EXPECT_FALSE(is_supported_block("parametric"));
+    EXPECT_FALSE(is_supported_block("lemon"));
     const auto& known = known_block_keywords();
     EXPECT_NE(std::find(known.begin(), known.end(), "isosurface"), known.end());
 }

@@ -11,39 +11,36 @@
 
 namespace lumen::interp {
 
-namespace {
-
 // contained_by { box { C1, C2 } } or { sphere { C, R } }: a plain box or sphere, untransformed.
-void read_container(ItemCursor& cur, const BlockValue& block, scene::Isosurface& iso) {
+void read_container(ItemCursor& cur, const BlockValue& block, scene::Container& c) {
     ItemCursor sub(cur.ctx(), block);
     const SourceLoc loc = sub.next_loc();
     const scene::ObjectPtr& o = sub.expect<scene::ObjectPtr>("contained_by", "a box or a sphere");
     if (!o->transform.is_identity())
-        cur.fail(loc, "a contained_by box or sphere cannot be transformed: transform the isosurface");
+        cur.fail(loc, "a contained_by box or sphere cannot be transformed: transform the shape");
     if (const auto* b = std::get_if<scene::Box>(&o->shape)) {
-        iso.sphere = false;
-        iso.lo = glm::min(b->min, b->max);
-        iso.hi = glm::max(b->min, b->max);
+        c.sphere = false;
+        c.lo = glm::min(b->min, b->max);
+        c.hi = glm::max(b->min, b->max);
     } else if (const auto* s = std::get_if<scene::Sphere>(&o->shape)) {
-        iso.sphere = true;
-        iso.center = s->center;
-        iso.radius = s->radius;
+        c.sphere = true;
+        c.center = s->center;
+        c.radius = s->radius;
     } else {
         cur.fail(loc, "contained_by takes a box or a sphere");
     }
     if (!sub.at_end()) sub.fail_expected("the end of contained_by", "");
 }
 
-double positive_or_default(ItemCursor& cur, const Item& kw, double fallback) {
+double positive_or_default(ItemCursor& cur, const Item& kw, double fallback, const char* shape) {
     const double v = cur.expect_float(kw.keyword);
     if (v > 0) return v;
     char text[32];
     std::snprintf(text, sizeof text, "%g", fallback);
-    cur.warn(kw.loc, "an isosurface's " + kw.keyword + " must be above 0: using " + text);
+    cur.warn(kw.loc, std::string("a") + (shape[0] == 'i' ? "n " : " ") + shape + "'s " +
+                         kw.keyword + " must be above 0: using " + text);
     return fallback;
 }
-
-}  // namespace
 
 scene::ObjectPtr build_isosurface(ItemCursor& cur) {
     const SourceLoc loc = cur.next_loc();
@@ -62,7 +59,7 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur) {
         "max_trace", "all_intersections"};
     auto extra = [&](const Item& item) {
         if (const BlockValue* b = block_of(item, "contained_by")) {
-            read_container(cur, *b, iso);
+            read_container(cur, *b, iso.container);
             return true;
         }
         if (item.kind != Item::Kind::Keyword) return false;
@@ -70,9 +67,9 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur) {
         if (w == "threshold") {
             iso.threshold = cur.expect_float(w);
         } else if (w == "accuracy") {
-            iso.accuracy = positive_or_default(cur, item, 0.001);
+            iso.accuracy = positive_or_default(cur, item, 0.001, "isosurface");
         } else if (w == "max_gradient") {
-            iso.max_gradient = positive_or_default(cur, item, 1.1);
+            iso.max_gradient = positive_or_default(cur, item, 1.1, "isosurface");
         } else if (w == "evaluate") {
             glm::dvec3 e;
             for (int i = 0; i < 3; ++i) e[i] = cur.expect_float(w);
@@ -94,7 +91,7 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur) {
     scene::Object obj;
     obj.loc = cur.block_loc();
     read_object_modifiers(cur, obj, extra, kWords);
-    if (!(iso.sphere ? iso.radius > 0 : iso.lo.x < iso.hi.x && iso.lo.y < iso.hi.y && iso.lo.z < iso.hi.z))
+    if (iso.container.empty())
         cur.warn(cur.block_loc(), "the isosurface's container is empty: nothing is drawn");
     obj.shape = std::move(iso);
     return std::make_shared<scene::Object>(std::move(obj));

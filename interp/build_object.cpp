@@ -297,6 +297,10 @@ scene::ObjectPtr read_primitive(std::type_identity<scene::Isosurface>, ItemCurso
     return build_isosurface(cur);
 }
 
+scene::ObjectPtr read_primitive(std::type_identity<scene::Parametric>, ItemCursor& cur) {
+    return build_parametric(cur);
+}
+
 bool is_keyword_of(const std::string& kw, std::initializer_list<std::string_view> words) {
     return std::find(words.begin(), words.end(), kw) != words.end();
 }

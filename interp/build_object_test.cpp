@@ -202,9 +202,9 @@ TEST_F(BuildObject, Errors) {
 }
 
 TEST_F(BuildObject, UnsupportedShapeAndModifiersAreRecorded) {
-    scene::Scene s = run("union { parametric { } sphere { 0, 1 photons { target } } }");
+    scene::Scene s = run("union { lemon { } sphere { 0, 1 photons { target } } }");
     ASSERT_EQ(s.unsupported.size(), 2u);
-    EXPECT_EQ(s.unsupported[0].feature, "parametric");
+    EXPECT_EQ(s.unsupported[0].feature, "lemon");
     EXPECT_EQ(s.unsupported[1].feature, "photons");
 }
 

@@ -313,9 +313,9 @@ TEST_F(BuildPattern, ObjectPatternKeepsItsObjectAndEntries) {
         "sphere { 0, 1 normal { object { sphere { 0, 1 } normal { bumps }, normal { dents } } } }");
     EXPECT_EQ(n.normal->normal_map.size(), 2u);
 
-    const scene::Scene s = run("sphere { 0, 1 pigment { object { parametric { } } } }");
+    const scene::Scene s = run("sphere { 0, 1 pigment { object { lemon { } } } }");
     ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "parametric");
+    EXPECT_EQ(s.unsupported[0].feature, "lemon");
 
     EXPECT_NE(error_of("sphere { 0, 1 pigment { object { 1 } } }").find("expected an object"),
               std::string::npos);

@@ -385,22 +385,42 @@ struct ShapeDumper {
         put_if(o, "smooth", h.smooth, false);
         put_if(o, "hierarchy", h.hierarchy, true);
     }
+    void put_container(const scene::Container& c) const {
+        if (c.sphere) {
+            o.put("sphere_center", vec(c.center));
+            o.put("sphere_radius", Json::num(c.radius));
+        } else {
+            o.put("box_lo", vec(c.lo));
+            o.put("box_hi", vec(c.hi));
+        }
+    }
     void operator()(const scene::Isosurface& s) const {
         o.put("type", Json::str("isosurface"));
         o.put("instructions", Json::num(s.function ? double(s.function->code.size()) : 0));
-        if (s.sphere) {
-            o.put("sphere_center", vec(s.center));
-            o.put("sphere_radius", Json::num(s.radius));
-        } else {
-            o.put("box_lo", vec(s.lo));
-            o.put("box_hi", vec(s.hi));
-        }
+        put_container(s.container);
         o.put("threshold", Json::num(s.threshold));
         o.put("accuracy", Json::num(s.accuracy));
         o.put("max_gradient", Json::num(s.max_gradient));
         if (s.evaluate) o.put("evaluate", vec(*s.evaluate));
         put_if(o, "open", s.open, false);
         o.put("max_trace", Json::num(s.max_trace));
+    }
+    void operator()(const scene::Parametric& s) const {
+        o.put("type", Json::str("parametric"));
+        Json sizes = Json::array();
+        for (const fn::ProgramPtr& f : s.functions)
+            sizes.push(Json::num(f ? double(f->code.size()) : 0));
+        o.put("instructions", std::move(sizes));
+        o.put("uv", points2({s.uv_lo, s.uv_hi}));
+        put_container(s.container);
+        o.put("accuracy", Json::num(s.accuracy));
+        o.put("max_gradient", Json::num(s.max_gradient));
+        if (s.precompute_depth) {
+            o.put("precompute_depth", Json::num(s.precompute_depth));
+            o.put("precompute", Json::str(std::string(s.precompute[0] ? "x" : "") +
+                                          (s.precompute[1] ? "y" : "") +
+                                          (s.precompute[2] ? "z" : "")));
+        }
     }
     void operator()(const scene::SphereSweep& s) const {
         static const char* splines[] = {"linear_spline", "b_spline", "cubic_spline"};

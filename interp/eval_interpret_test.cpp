@@ -87,8 +87,8 @@ TEST(InterpretTest, UnknownBlockKeywordSuggestsTheRightOne) {
 }
 
 TEST(InterpretTest, ReservedButUnsupportedBlocksAreNotEvaluated) {
-    // The parametric body refers to names that do not exist: it must not be evaluated.
-    auto s = interpret("#declare P = parametric { function { Undefined_Fn(x, y, z) } Whatever }\n"
+    // The lemon's body refers to names that do not exist: it must not be evaluated.
+    auto s = interpret("#declare P = lemon { Undefined_Fn(x, y, z) Whatever }\n"
                        "sphere { 0, 1 }\n");
     EXPECT_EQ(s.objects.size(), 1u);
 }

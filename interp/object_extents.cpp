@@ -271,8 +271,15 @@ struct ShapeBoxes {
     }
     // POV-Ray's box: the container's (a sphere's cube).
     ShapeBox operator()(const scene::Isosurface& s) const {
-        if (s.sphere) return {{s.center - glm::dvec3(s.radius), s.center + glm::dvec3(s.radius)}};
-        return {{s.lo, s.hi}};
+        const scene::Container& c = s.container;
+        if (c.sphere) return {{c.center - glm::dvec3(c.radius), c.center + glm::dvec3(c.radius)}};
+        return {{c.lo, c.hi}};
+    }
+    // POV-Ray's box: the container's, as for an isosurface.
+    ShapeBox operator()(const scene::Parametric& s) const {
+        const scene::Container& c = s.container;
+        if (c.sphere) return {{c.center - glm::dvec3(c.radius), c.center + glm::dvec3(c.radius)}};
+        return {{c.lo, c.hi}};
     }
     ShapeBox operator()(const scene::SphereSweep& s) const {
         Extents e;

@@ -19,6 +19,7 @@
 #include "render/shapes/superellipsoid.hpp"
 #include "render/shapes/height_field.hpp"
 #include "render/shapes/isosurface.hpp"
+#include "render/shapes/parametric.hpp"
 #include "render/shapes/text.hpp"
 #include "render/shapes/torus.hpp"
 #include "render/shapes/triangle.hpp"

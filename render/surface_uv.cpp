@@ -5,7 +5,8 @@
 // * box: the unfolded cross of its faces, a 4 x 3 grid of cells (u across the x-min, z-max
 //   (front), x-max and z-min faces, v up them; the y faces above and below the front one);
 // * torus: u = 1 - (atan2(z, x) + pi)/(2 pi) about y, v the same turn about the tube;
-// * mesh, mesh2, bicubic_patch, lathe and sor: what their intersection worked out;
+// * mesh, mesh2, bicubic_patch, lathe, sor and parametric: what their intersection worked out
+//   (a parametric's own u and v, those of the piece where its depth was found);
 // * everything else: the world hit's x and y.
 #include "render/surface_uv.hpp"
 
@@ -61,6 +62,7 @@ glm::dvec2 uv_of(const TorusShape& s, const UvQuery& q) {
 }
 
 glm::dvec2 uv_of(const MeshPtr&, const UvQuery& q) { return q.hit.uv; }
+glm::dvec2 uv_of(const ParametricShape&, const UvQuery& q) { return q.hit.uv; }
 
 // Swept shapes: v from the intersection (the curve parameter), u the turn about the axis.
 glm::dvec2 uv_of(const LatheShape&, const UvQuery& q) {

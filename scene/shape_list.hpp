@@ -36,7 +36,8 @@
     X(HeightField, "height_field")             \
     X(JuliaFractal, "julia_fractal")           \
     X(SphereSweep, "sphere_sweep")             \
-    X(Isosurface, "isosurface")
+    X(Isosurface, "isosurface")                \
+    X(Parametric, "parametric")
 
 namespace lumen::scene {
 
@@ -62,7 +63,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "lemon", "light_group", "parametric"};
+    "lemon", "light_group"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -285,24 +285,53 @@ struct JuliaFractal {
     }
 };
 
-// isosurface { function { F } [contained_by { box {C1, C2} | sphere {C, R} }] [threshold T]
-// [accuracy A] [max_gradient G] [evaluate P0, P1, P2] [open] [max_trace N | all_intersections] }:
+// contained_by { box { C1, C2 } | sphere { C, R } } of an isosurface or a parametric: where
+// the surface is looked for (POV-Ray's default: the box -1 to 1).
+struct Container {
+    bool sphere = false;       // a sphere, else a box
+    glm::dvec3 lo{-1}, hi{1};  // the box, sorted per axis
+    glm::dvec3 center{0};      // the sphere
+    double radius = 1;
+    LUMEN_FIELDS(f("sphere", s.sphere), f("lo", s.lo), f("hi", s.hi), f("center", s.center),
+                 f("radius", s.radius))
+    bool empty() const {
+        return sphere ? !(radius > 0) : !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z);
+    }
+};
+
+// isosurface { function { F } [contained_by { ... }] [threshold T] [accuracy A]
+// [max_gradient G] [evaluate P0, P1, P2] [open] [max_trace N | all_intersections] }:
 // the surface F = T inside the container (render/shapes/isosurface.hpp), F compiled.
 struct Isosurface {
     fn::ProgramPtr function;
-    bool sphere = false;                 // the container: a sphere, else a box
-    glm::dvec3 lo{-1}, hi{1};            // the box, sorted per axis
-    glm::dvec3 center{0};                // the sphere
-    double radius = 1;
+    Container container;
     double threshold = 0, accuracy = 0.001, max_gradient = 1.1;
     std::optional<glm::dvec3> evaluate;  // P0, P1, P2
     bool open = false;
     int max_trace = 1;                   // 1..10; all_intersections is 10
     std::shared_ptr<const PatternGlobals> globals;  // the scene's noise_generator
-    LUMEN_FIELDS(f("function", s.function), f("sphere", s.sphere), f("lo", s.lo), f("hi", s.hi),
-                 f("center", s.center), f("radius", s.radius), f("threshold", s.threshold),
-                 f("accuracy", s.accuracy), f("max_gradient", s.max_gradient),
-                 f("evaluate", s.evaluate), f("open", s.open), f("max_trace", s.max_trace))
+    LUMEN_FIELDS(f("function", s.function), f("container", s.container),
+                 f("threshold", s.threshold), f("accuracy", s.accuracy),
+                 f("max_gradient", s.max_gradient), f("evaluate", s.evaluate), f("open", s.open),
+                 f("max_trace", s.max_trace))
+};
+
+// parametric { function { FX } function { FY } function { FZ } <u1, v1>, <u2, v2>
+// [contained_by { ... }] [accuracy A] [max_gradient G] [precompute D, x, y, z] }: the points
+// (FX, FY, FZ)(u, v) over the uv rectangle, u and v in the functions' first two parameters
+// (render/shapes/parametric.hpp). A surface without an inside.
+struct Parametric {
+    std::array<fn::ProgramPtr, 3> functions;
+    glm::dvec2 uv_lo{0}, uv_hi{1};  // sorted
+    Container container;
+    double accuracy = 0.001, max_gradient = 1;
+    int precompute_depth = 0;                 // 0: none; else 1..20
+    std::array<bool, 3> precompute{};         // per axis x, y, z
+    std::shared_ptr<const PatternGlobals> globals;  // the scene's noise_generator
+    LUMEN_FIELDS(f("functions", s.functions), f("uv_lo", s.uv_lo), f("uv_hi", s.uv_hi),
+                 f("container", s.container), f("accuracy", s.accuracy),
+                 f("max_gradient", s.max_gradient), f("precompute_depth", s.precompute_depth),
+                 f("precompute", s.precompute))
 };
 
 // sphere_sweep { linear_spline | b_spline | cubic_spline N, <c1>, r1, ... [tolerance T] }:

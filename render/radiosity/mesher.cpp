@@ -293,6 +293,7 @@ struct ShapeMesher {
     NotMeshed operator()(const scene::Blob&) const { return {}; }
     NotMeshed operator()(const scene::Ovus&) const { return {}; }
     NotMeshed operator()(const scene::Isosurface&) const { return {}; }
+    NotMeshed operator()(const scene::Parametric&) const { return {}; }
     // Height fields are not meshed yet: they only occlude.
     NotMeshed operator()(const scene::HeightField&) const { return {}; }
     NotMeshed operator()(const scene::JuliaFractal&) const { return {}; }

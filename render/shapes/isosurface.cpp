@@ -7,12 +7,11 @@
 #include <glm/geometric.hpp>
 
 #include "render/function_host.hpp"
+#include "render/shapes/container.hpp"
 
 namespace lumen::render {
 
 namespace {
-
-constexpr double kFar = 2e10;  // POV-Ray's largest depth along a ray
 
 // The function at object-space point p.
 double F(const IsosurfaceShape& s, const glm::dvec3& p) {
@@ -76,46 +75,10 @@ struct Search {
     }
 };
 
-// The ray's span in the container and the outward normals where it enters and leaves.
-bool container(const scene::Isosurface& iso, const LocalRay& r, double len, double& t1,
-               double& t2, glm::dvec3& n1, glm::dvec3& n2) {
-    if (iso.sphere) {
-        const glm::dvec3 d = r.d / len, oc = r.o - iso.center;
-        const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - iso.radius * iso.radius;
-        const double disc = b * b - c;
-        if (!(disc >= 0)) return false;
-        const double q = std::sqrt(disc);
-        t1 = (-b - q) / len;
-        t2 = (-b + q) / len;
-        n1 = glm::normalize(r.at(t1) - iso.center);
-        n2 = glm::normalize(r.at(t2) - iso.center);
-        if (t2 < 1e-6) return false;
-        return true;
-    }
-    t1 = 0;
-    t2 = kFar;
-    n1 = n2 = glm::dvec3(0);
-    for (int a = 0; a < 3; ++a) {
-        if (r.d[a] == 0) {
-            if (r.o[a] < iso.lo[a] || r.o[a] > iso.hi[a]) return false;
-            continue;
-        }
-        double ta = (iso.lo[a] - r.o[a]) / r.d[a], tb = (iso.hi[a] - r.o[a]) / r.d[a];
-        glm::dvec3 na(0), nb(0);
-        na[a] = -1;
-        nb[a] = 1;
-        if (ta > tb) std::swap(ta, tb), std::swap(na, nb);
-        if (ta > t1) t1 = ta, n1 = na;
-        if (tb < t2) t2 = tb, n2 = nb;
-        if (t1 > t2) return false;
-    }
-    return t2 >= 1e-6;
-}
-
 glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
     const scene::Isosurface& iso = s.iso;
-    if (iso.sphere && std::fabs(glm::length(p - iso.center) - iso.radius) < 1e-10)
-        return glm::normalize(p - iso.center);
+    if (iso.container.sphere && std::fabs(glm::length(p - iso.container.center) - iso.container.radius) < 1e-10)
+        return glm::normalize(p - iso.container.center);
     const double f0 = F(s, p), A = iso.accuracy;
     const glm::dvec3 n(F(s, p + glm::dvec3(A, 0, 0)) - f0, F(s, p + glm::dvec3(0, A, 0)) - f0,
                        F(s, p + glm::dvec3(0, 0, A)) - f0);
@@ -142,7 +105,7 @@ int isosurface_hits(const IsosurfaceShape& s, const LocalRay& r, IsoHit* hits) {
     if (!(len > 0)) return 0;
     double t1, t2;
     glm::dvec3 n1, n2;
-    if (!container(iso, r, len, t1, t2, n1, n2)) return 0;
+    if (!container_span(iso.container, r, len, t1, t2, n1, n2)) return 0;
     t1 = std::max(t1, 0.0);
     const double A = iso.accuracy;
     Search search{s, r, len, iso.max_gradient};
@@ -232,21 +195,9 @@ bool intersect(const IsosurfaceShape& s, const LocalRay& r, double tmin, double 
 
 bool inside(const IsosurfaceShape& s, const glm::dvec3& p) {
     if (!s.valid) return false;
-    const scene::Isosurface& iso = s.iso;
-    if (iso.sphere) {
-        const glm::dvec3 d = p - iso.center;
-        if (glm::dot(d, d) > iso.radius * iso.radius) return false;
-    } else if (p.x < iso.lo.x || p.y < iso.lo.y || p.z < iso.lo.z || p.x > iso.hi.x ||
-               p.y > iso.hi.y || p.z > iso.hi.z) {
-        return false;
-    }
-    return F(s, p) <= iso.threshold;
+    return in_container(s.iso.container, p) && F(s, p) <= s.iso.threshold;
 }
 
-Aabb bounds(const IsosurfaceShape& s) {
-    const scene::Isosurface& iso = s.iso;
-    if (iso.sphere) return {iso.center - glm::dvec3(iso.radius), iso.center + glm::dvec3(iso.radius)};
-    return {iso.lo, iso.hi};
-}
+Aabb bounds(const IsosurfaceShape& s) { return container_bounds(s.iso.container); }
 
 }  // namespace lumen::render

@@ -1,5 +1,4 @@
 // Features that parse but are not rendered yet are listed in source order.
-parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }
 sphere { 0, 1 pigment { granite } photons { target } }
 sphere { 0, 1 hollow interior { media { emission 0.5 } } }
 camera { fisheye angle 180 }
