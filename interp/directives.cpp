@@ -73,6 +73,21 @@ Value Evaluator::declared_value(const ast::Node& n, size_t rhs) {
     return Value{std::shared_ptr<const TextureValue>(std::move(layered)), items[0].loc};
 }
 
+// POV-Ray keeps a function's identifier until #undef: a function is not redeclared (a #local
+// in a macro binds a new name), nor does another kind of identifier become a function.
+void Evaluator::check_function_redeclaration(const ast::Node& target, bool local,
+                                             const Value& v) {
+    const size_t frame = symbols.frame_of(target.text);
+    if (frame == SymbolTable::npos || (local && frame + 1 != symbols.depth())) return;
+    const Value& old = *symbols.find(target.text);
+    using Fn = std::shared_ptr<const FunctionValue>;
+    if (old.is<Fn>())
+        throw LumenError(target.loc, "Redeclaring functions is not allowed - #undef the function first!");
+    if (v.is<Fn>())
+        throw LumenError(target.loc, std::string("Attempted to redefine ") + old.type_name() +
+                                         " identifier as function identifier.");
+}
+
 void Evaluator::declare(const ast::Node& n) {
     bool local = n.text == "local";
     // `#declare deprecated [once] "message" Name = ...`: the parser keeps the message first.
@@ -80,6 +95,7 @@ void Evaluator::declare(const ast::Node& n) {
     const ast::Node& target = *n.children.at(first);
     Value v = declared_value(n, first + 1);
     if (target.kind == Kind::Ident) {
+        check_function_redeclaration(target, local, v);
         if (local) symbols.local(target.text, std::move(v));
         else symbols.declare(target.text, std::move(v));
         return;

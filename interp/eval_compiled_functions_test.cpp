@@ -89,7 +89,7 @@ TEST_F(CompiledFunctionTest, LocatedErrorsForWhatFunctionsCannotDo) {
     EXPECT_EQ(error_of("#declare G = function(a) { a }\n#declare F = function { G(x, y) }"),
               "test.pov:2:25: error: function 'G' takes 1 argument(s), found 2");
     // A pattern is given x, y, z only: a function of four parameters cannot be one.
-    EXPECT_EQ(error_of("#declare G = function(a, b, c, d) { a }\nsphere { 0, 1 pigment { G } }"),
+    EXPECT_EQ(error_of("#declare P4 = function(a, b, c, d) { a }\nsphere { 0, 1 pigment { P4 } }"),
               "test.pov:2:25: error: a pattern function is given x, y and z: this one takes 4 "
               "parameters");
 }

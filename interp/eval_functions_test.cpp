@@ -33,11 +33,31 @@ TEST_F(FunctionTest, UnevaluableFunctionsGiveErrors) {
     EXPECT_EQ(expr_error("F(1, 2)"), "expr:1:1: error: function 'F' takes 1 argument(s), found 2");
 }
 
-// A call binds to the function as it was when the caller was declared (POV-Ray's rule), so a
-// body naming its own identifier calls the earlier function: no recursion.
+// A call binds to the function as it was when the caller was declared (POV-Ray's rule): G
+// keeps the F it was declared with after F is undefined and declared anew (povray: 2 and 5).
 TEST_F(FunctionTest, CallsBindAtDeclaration) {
-    run("#declare F = function { 1 }\n#declare F = function { F(x, y, z) + 1 }\n");
-    EXPECT_DOUBLE_EQ(number("F(1, 2, 3)"), 2);
+    run("#declare F = function { 1 }\n#declare G = function { F(x, y, z) + 1 }\n#undef F\n"
+        "#declare F = function { 5 }\n");
+    EXPECT_DOUBLE_EQ(number("G(1, 2, 3)"), 2);
+    EXPECT_DOUBLE_EQ(number("F(1, 2, 3)"), 5);
+}
+
+// POV-Ray's rules, probed with povray 3.7: a function keeps its name until #undef, another
+// identifier does not become a function, and a macro's #local binds a fresh name.
+TEST_F(FunctionTest, FunctionsAreNotRedeclared) {
+    EXPECT_EQ(error_of("#declare F = function { x }\n#declare F = function { y }"),
+              "test.pov:2:10: error: Redeclaring functions is not allowed - #undef the function first!");
+    EXPECT_EQ(error_of("#declare G = function { x }\n#declare G = 1;"),
+              "test.pov:2:10: error: Redeclaring functions is not allowed - #undef the function first!");
+    EXPECT_EQ(error_of("#declare H = function { x }\n#local H = function { y }"),
+              "test.pov:2:8: error: Redeclaring functions is not allowed - #undef the function first!");
+    EXPECT_EQ(error_of("#declare K = 1;\n#declare K = function { y }"),
+              "test.pov:2:10: error: Attempted to redefine float identifier as function identifier.");
+    run("#declare U = function { x }\n#undef U\n#declare U = function { y }\n"
+        "#macro M() #local L = function { y } L(1, 2, 3) #end\n"
+        "#declare A = M();\n#declare B = M();\n");
+    EXPECT_DOUBLE_EQ(number("U(1, 2, 3)"), 2);
+    EXPECT_DOUBLE_EQ(num_var("B"), 2);
 }
 
 TEST_F(FunctionTest, DeclareWithADirectiveAsItsValue) {

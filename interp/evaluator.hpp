@@ -148,6 +148,7 @@ private:
     void fill_array(ArrayValue& arr, const ast::Node& init, size_t level, size_t& next);
 
     void declare(const ast::Node& node);
+    void check_function_redeclaration(const ast::Node& target, bool local, const Value& v);
     Value declared_value(const ast::Node& node, size_t rhs);
     Flow run_if(const ast::Node& node, std::vector<Item>& out);
     Flow run_ifdef(const ast::Node& node, std::vector<Item>& out);
