@@ -341,6 +341,7 @@ bool Geometry::placed_is_opaque(size_t i) const {
 bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Query query) const {
     const NodeStore& store = impl_->store;
     const bool shadow = query != Query::All;
+    const ShadowRayMark mark(shadow);  // isosurfaces' cross-ray cache
     NodeHit best;
     bool found = false;
     double best_t = t_max;
@@ -373,6 +374,7 @@ bool Geometry::opaque_only(Query query) const { return impl_->opaque_only[int(qu
 bool Geometry::occluded(const Ray& ray, double t_min, double t_max, Query query) const {
     const NodeStore& store = impl_->store;
     const LocalRay local{ray.origin, ray.dir};
+    const ShadowRayMark mark(query != Query::All);  // isosurfaces' cross-ray cache
     bool found = false;
     double limit = t_max;  // -inf once found: the BVH walk then meets no further box
     impl_->for_each_candidate(ray, t_min, limit, query, [&](const Root& r) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include <glm/geometric.hpp>
@@ -19,6 +20,19 @@ double F(const IsosurfaceShape& s, const glm::dvec3& p) {
     return fn::evaluate(*s.iso.function, a, s.context);
 }
 
+// POV-Ray's cross-ray cache, one per render thread: the ends and the lowest value of the last
+// failed root search of a non-shadow ray. A later search on the same object whose ends lie
+// near enough that the gradient bound keeps the function above zero is skipped. With a
+// max_gradient that holds this changes nothing but the time; with one too low it decides, as
+// in POV-Ray, some of the holes.
+struct FailedSearch {
+    uint64_t object = 0;  // the shape's id; 0: empty
+    glm::dvec3 p1{0}, p2{0};
+    double fmin = 0;
+};
+thread_local FailedSearch t_failed;
+thread_local bool t_shadow_ray = false;
+
 // One ray's search: the function along the ray and the gradient bound in use.
 struct Search {
     const IsosurfaceShape& s;
@@ -27,6 +41,7 @@ struct Search {
     double g;         // max_gradient (raised by `evaluate`)
     double sign = 1;  // +1: looking for V < 0 (entering); -1: for V > 0
     double found = 0;  // the steepest |f(b) - f(a)| per object-space unit met
+    double fmin = 0;   // the lowest f met by the current root search
 
     double V(double t) const { return F(s, r.at(t)) - s.iso.threshold; }
     double f(double t) const { return sign * V(t); }
@@ -56,6 +71,7 @@ struct Search {
             w /= 2;
             dt /= 2;
             const double tm = ta + w, fm = f(tm);
+            fmin = std::min(fmin, fm);
             return bisect(ta, fa, tm, fm, dt, w, 2 * inv, root) ||
                    bisect(tm, fm, tb, fb, dt, w, 2 * inv, root);
         }
@@ -63,15 +79,26 @@ struct Search {
     }
 
     bool find_root(double t1, double t2, double& root) {
+        const glm::dvec3 p1 = r.at(t1), p2 = r.at(t2);
+        const uint64_t object = s.id;
+        if (t_failed.object == object) {
+            const double reach = std::max(glm::length(p1 - t_failed.p1), glm::length(p2 - t_failed.p2));
+            if (t_failed.fmin - g * reach > 0) return false;
+        }
+        t_failed.object = 0;
         double f1 = f(t1);
+        fmin = f1;
         if (s.iso.open && f1 < 0) {  // an open surface looks for the exit instead
             sign = -sign;
             f1 = -f1;
         }
         const double f2 = f(t2);
+        fmin = std::min(fmin, f2);
         if (s.iso.evaluate && g > s.iso.evaluate->x) g *= s.iso.evaluate->z;
         const double w = t2 - t1;
-        return bisect(t1, f1, t2, f2, g * len * w, w, 1 / (len * w), root);
+        if (bisect(t1, f1, t2, f2, g * len * w, w, 1 / (len * w), root)) return true;
+        if (!t_shadow_ray) t_failed = {object, p1, p2, fmin};
+        return false;
     }
 };
 
@@ -89,8 +116,13 @@ glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
 
 }  // namespace
 
+ShadowRayMark::ShadowRayMark(bool shadow) : previous_(t_shadow_ray) { t_shadow_ray = shadow; }
+ShadowRayMark::~ShadowRayMark() { t_shadow_ray = previous_; }
+
 IsosurfaceShape make_isosurface(const scene::Isosurface& s) {
+    static std::atomic<uint64_t> next_id{1};
     IsosurfaceShape out;
+    out.id = next_id.fetch_add(1, std::memory_order_relaxed);
     out.iso = s;
     if (s.globals) out.context.noise_generator = s.globals->noise_generator;
     out.context.host = &function_host();

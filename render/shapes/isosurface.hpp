@@ -18,6 +18,7 @@ struct IsosurfaceShape {
     scene::Isosurface iso;
     fn::Context context;
     bool valid = false;
+    uint64_t id = 0;  // unique per prepared shape, kept by its copies: the cross-ray cache's key
     // The steepest slope the searches met (per object-space unit), for the warning after the
     // render; shared by the copies of the shape and raised by every thread.
     std::shared_ptr<std::atomic<double>> gradient_found = std::make_shared<std::atomic<double>>(0);
@@ -42,6 +43,19 @@ struct IsoHit {
 };
 constexpr int kMaxIsoHits = 12;
 int isosurface_hits(const IsosurfaceShape& s, const LocalRay& r, IsoHit* hits);
+
+// While one lives, this thread's rays are shadow rays (Query::Shadow): their failed root
+// searches are not remembered by the cross-ray cache (POV-Ray's rule).
+class ShadowRayMark {
+public:
+    explicit ShadowRayMark(bool shadow);
+    ~ShadowRayMark();
+    ShadowRayMark(const ShadowRayMark&) = delete;
+    ShadowRayMark& operator=(const ShadowRayMark&) = delete;
+
+private:
+    bool previous_;
+};
 
 inline constexpr double kDepthIsosurface = 1e-4;
 

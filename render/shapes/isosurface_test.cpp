@@ -69,14 +69,37 @@ TEST(Isosurface, WarnsAfterARenderWhenMaxGradientIsOff) {
           std::tuple{50.0, true, false}}) {
         const IsosurfaceShape s = shape(0.5, false, 1, max_gradient);
         IsoHit hits[kMaxIsoHits];
-        for (int i = 0; i < 50; ++i)
-            isosurface_hits(s, {{-3, -0.9 + 0.036 * i, 0.3}, {1, 0, 0}}, hits);
+        for (int i = 0; i < 50; ++i) {
+            IsosurfaceShape alone = s;  // the slopes are shared; a new cache key: every search runs
+            alone.id = 1'000'000 + i;
+            isosurface_hits(alone, {{-3, -0.9 + 0.036 * i, 0.3}, {1, 0, 0}}, hits);
+        }
         const auto w = gradient_warning(s);
         EXPECT_EQ(bool(w), warns) << max_gradient;
         if (w) {
             EXPECT_EQ(w->find("may contain holes") != std::string::npos, holes) << *w;
         }
     }
+}
+
+// POV-Ray's cross-ray cache: after a failed search, a search on the same object whose ends
+// lie within fmin / max_gradient of the failed one's is skipped. With a max_gradient that
+// holds it skips only true misses; with one too low it skips hits (POV-Ray's holes).
+TEST(Isosurface, AFailedSearchSkipsNearbySearches) {
+    const LocalRay miss{{-3, 0.9, 0}, {1, 0, 0}}, hit{{-3, 0.45, 0}, {1, 0, 0}};
+    IsoHit hits[kMaxIsoHits];
+    const IsosurfaceShape low = shape(0.5, false, 1, 1.0);  // |grad| reaches 2.7 in the box
+    EXPECT_EQ(isosurface_hits(low, hit, hits), 1);  // found when nothing failed before
+    EXPECT_EQ(isosurface_hits(low, miss, hits), 0);
+    EXPECT_EQ(isosurface_hits(low, hit, hits), 0);  // skipped: the miss's bound rules it out
+    const IsosurfaceShape right = shape(0.5, false, 1, 8.0);
+    EXPECT_EQ(isosurface_hits(right, miss, hits), 0);
+    EXPECT_EQ(isosurface_hits(right, hit, hits), 1);  // a true bound does not rule it out
+    {
+        const ShadowRayMark shadow(true);  // a shadow ray's failure is not remembered
+        EXPECT_EQ(isosurface_hits(low, miss, hits), 0);
+    }
+    EXPECT_EQ(isosurface_hits(low, hit, hits), 1);
 }
 
 }  // namespace
