@@ -43,10 +43,10 @@ constexpr Math2Name kMath2[] = {
 class Compiler {
 public:
     Compiler(Evaluator& ev, const ast::Node& block) : ev_(ev) {
-        if (block.params.empty()) {
+        if (block.more().params.empty()) {
             params_ = {"x", "y", "z"};
         } else {
-            params_ = block.params;
+            params_ = block.more().params;
         }
         p_.params = int(params_.size());
     }
@@ -179,7 +179,7 @@ private:
 
     // One flat chain of the parser (SDL puts & and | on one level; functions bind & tighter).
     void binary(const ast::Node& e) {
-        const auto& ops = e.ops;
+        const auto& ops = e.more().ops;
         bool has_or = false, has_and = false;
         for (const std::string& op : ops) has_or |= op == "|", has_and |= op == "&";
         if (has_or && has_and) {

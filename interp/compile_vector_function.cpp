@@ -10,7 +10,7 @@ namespace lumen::interp {
 using fn::Op;
 
 fn::ProgramPtr Evaluator::compile_vector_function(const ast::Node& block) {
-    if (!block.params.empty())
+    if (!block.more().params.empty())
         throw LumenError(block.loc, "a " + block.children.back()->text +
                                         " function takes no parameter list (it has x, y, z)");
     const ast::Node& body = *block.children.back();

@@ -103,14 +103,14 @@ static Value apply_binary(Evaluator& ev, const std::string& op, const Value& a, 
 Value Evaluator::fold_binary(const ast::Node& e, size_t from, Value acc) {
     for (size_t i = from; i < e.children.size(); ++i) {
         Value rhs = eval(*e.children[i]);
-        acc = apply_binary(*this, e.ops.at(i - 1), acc, rhs, e.loc);
+        acc = apply_binary(*this, e.more().ops.at(i - 1), acc, rhs, e.loc);
     }
     return acc;
 }
 
 void Evaluator::eval_argument(const ast::Node& a, std::vector<Value>& args) {
     const bool additive = a.kind == Kind::Binary &&
-                          std::all_of(a.ops.begin(), a.ops.end(),
+                          std::all_of(a.more().ops.begin(), a.more().ops.end(),
                                       [](const std::string& op) { return op == "+" || op == "-"; });
     if (!additive) {
         args.push_back(eval(a));
@@ -123,7 +123,7 @@ void Evaluator::eval_argument(const ast::Node& a, std::vector<Value>& args) {
     }
     // POV-Ray ends an argument where its object (texture, ...) ends, so `F(Obj -y, 0)` passes
     // Obj and -y (shapes.inc callers rely on it); the sign starts the next argument.
-    Value sign = apply_binary(*this, a.ops[0], Value{0.0, a.loc}, eval(*a.children.at(1)), a.loc);
+    Value sign = apply_binary(*this, a.more().ops[0], Value{0.0, a.loc}, eval(*a.children.at(1)), a.loc);
     args.push_back(std::move(head));
     args.push_back(fold_binary(a, 2, std::move(sign)));
 }

@@ -150,7 +150,7 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
 
 Value Evaluator::eval_block(const ast::Node& block) {
     const std::string& kw = block.text;
-    if (kw == "function" || kw == "spline" || !block.params.empty()) return function_block(block);
+    if (kw == "function" || kw == "spline" || !block.more().params.empty()) return function_block(block);
     if (!is_supported_block(kw)) {
         if (parser::is_reserved_word(kw)) return Value{scene::Unsupported{kw, block.loc}, block.loc};
         throw LumenError(block.loc, "unknown keyword '" + kw + "'",

@@ -16,13 +16,13 @@ const ast::Node* Evaluator::macro_named(const std::string& name) {
 const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
     if (auto it = macro_cache_.find(&macro); it != macro_cache_.end()) return *it->second;
     const SourceFile& file = *macro.loc.file;
-    trees_.push_back(parser::parse_fragment(file, macro.raw_begin, macro.raw_end, macro.raw_loc));
+    trees_.push_back(parser::parse_fragment(file, macro.more().raw_begin, macro.more().raw_end, macro.more().raw_loc));
     macro_cache_[&macro] = trees_.back().get();
     return *trees_.back();
 }
 
 void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out) {
-    const auto& params = macro.params;
+    const auto& params = macro.more().params;
     // Arguments are evaluated in the caller's scope, before the new frame exists.
     std::vector<Value> args;
     struct Reference { size_t param; std::string name; size_t frame; };
@@ -37,7 +37,7 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
         throw LumenError(call.loc, "macro '" + macro.text + "' expects " + std::to_string(params.size()) +
                                        " argument(s), found " + std::to_string(given));
     for (size_t i = given; i < params.size(); ++i)
-        if (i >= macro.optional_params.size() || !macro.optional_params[i])
+        if (i >= macro.more().optional_params.size() || !macro.more().optional_params[i])
             throw LumenError(call.loc, "macro '" + macro.text + "' needs a value for parameter '" +
                                            params[i] + "'");
     if (macro_depth_ >= options_.max_macro_depth)

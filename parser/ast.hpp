@@ -86,23 +86,38 @@ enum class Kind {
 struct Node;
 using NodePtr = std::unique_ptr<Node>;
 
-struct Node {
-    Kind kind = Kind::Null;
-    SourceLoc loc;                     // where the node starts
-    std::string text;                  // meaning depends on kind (see above)
-    double number = 0.0;               // Number
-    bool flag = false;                 // ArrayDecl: has initialiser; Block: written
-                                       // `function W, H { }` (height_field), W and H are
-                                       // children[0] and [1], the body follows
-    std::vector<NodePtr> children;
+// What only a few kinds of node have, kept apart so that the many small nodes (numbers,
+// vectors, identifiers) stay small.
+struct NodeExtra {
     std::vector<std::string> ops;      // Binary operators
     std::vector<std::string> params;   // Block function params, Macro params
     std::vector<bool> optional_params; // Macro
     uint32_t raw_begin = 0, raw_end = 0;  // Macro body byte range
     SourceLoc raw_loc;                     // Macro body start
+};
+
+struct Node {
+    Kind kind = Kind::Null;
+    bool flag = false;                 // ArrayDecl: has initialiser; Block: written
+                                       // `function W, H { }` (height_field), W and H are
+                                       // children[0] and [1], the body follows
+    SourceLoc loc;                     // where the node starts
+    std::string text;                  // meaning depends on kind (see above)
+    double number = 0.0;               // Number
+    std::vector<NodePtr> children;
+    std::unique_ptr<NodeExtra> extra;  // see more()
 
     Node() = default;
     Node(Kind k, SourceLoc l) : kind(k), loc(l) {}
+    // The operators, parameters and macro body range (made on first write).
+    NodeExtra& more() {
+        if (!extra) extra = std::make_unique<NodeExtra>();
+        return *extra;
+    }
+    const NodeExtra& more() const {
+        static const NodeExtra kNone;
+        return extra ? *extra : kNone;
+    }
 };
 
 // Kind name for dumps and messages ("Number", "Block", ...).

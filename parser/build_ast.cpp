@@ -1,6 +1,7 @@
 // Frame bookkeeping and the finishers that shape each node (see build_ast.hpp).
 #include "parser/build_ast.hpp"
 
+#include <charconv>
 #include <cstdlib>
 #include <string>
 
@@ -12,6 +13,7 @@ using ast::NodePtr;
 
 BuildState::BuildState(const SourceFile& file) : file_(&file) {
     frames_.push_back({std::make_unique<Node>(Kind::Body, SourceLoc{&file, 1, 1, 0}), nullptr});
+    top_ = &frames_.back().node->children;
 }
 
 SourceLoc BuildState::loc(const InputIterator& it) const {
@@ -20,11 +22,13 @@ SourceLoc BuildState::loc(const InputIterator& it) const {
 
 void BuildState::open(Kind kind, const InputIterator& at) {
     frames_.push_back({std::make_unique<Node>(kind, loc(at)), at.data});
+    top_ = &frames_.back().node->children;
 }
 
 void BuildState::close(Finisher finish, const char* end) {
     Frame f = std::move(frames_.back());
     frames_.pop_back();
+    top_ = &frames_.back().node->children;
     NodePtr n = finish(std::move(f.node), std::string_view(f.begin, std::size_t(end - f.begin)), *this);
     if (n) frames_.back().node->children.push_back(std::move(n));
 }
@@ -47,9 +51,9 @@ void BuildState::enter(const InputIterator& at) {
 
 void BuildState::macro_body(const InputIterator& begin, const InputIterator& end) {
     Node& m = *frames_.back().node;
-    m.raw_begin = uint32_t(begin.byte);
-    m.raw_end = uint32_t(end.byte);
-    m.raw_loc = loc(begin);
+    m.more().raw_begin = uint32_t(begin.byte);
+    m.more().raw_end = uint32_t(end.byte);
+    m.more().raw_loc = loc(begin);
 }
 
 NodePtr BuildState::take_result() {
@@ -82,7 +86,9 @@ NodePtr text(NodePtr n, std::string_view t, BuildState&) {
 }
 
 NodePtr number(NodePtr n, std::string_view t, BuildState&) {
-    n->number = std::strtod(std::string(t).c_str(), nullptr);
+    // Correctly rounded, as strtod, without a copy of the text.
+    if (std::from_chars(t.data(), t.data() + t.size(), n->number).ec != std::errc())
+        n->number = std::strtod(std::string(t).c_str(), nullptr);
     return n;
 }
 
@@ -132,7 +138,7 @@ NodePtr binary(NodePtr n, std::string_view, BuildState&) {
     std::vector<NodePtr> operands;
     operands.reserve(n->children.size() / 2 + 1);
     for (std::size_t i = 0; i < n->children.size(); ++i) {
-        if (i % 2 == 1) n->ops.push_back(std::move(n->children[i]->text));
+        if (i % 2 == 1) n->more().ops.push_back(std::move(n->children[i]->text));
         else operands.push_back(std::move(n->children[i]));
     }
     n->children = std::move(operands);
@@ -191,7 +197,7 @@ NodePtr array_decl(NodePtr n, std::string_view, BuildState&) {
 }
 
 NodePtr params(NodePtr n, std::string_view, BuildState&) {
-    for (NodePtr& p : n->children) n->params.push_back(std::move(p->text));
+    for (NodePtr& p : n->children) n->more().params.push_back(std::move(p->text));
     n->children.clear();
     n->text = "(";
     return n;
@@ -207,7 +213,7 @@ NodePtr block(NodePtr n, std::string_view, BuildState&) {
     if (n->children.empty() || n->children.front()->kind != Kind::Null) return n;
     NodePtr head = pop_front(*n);
     if (head->text == "(") {
-        n->params = std::move(head->params);
+        n->more().params = std::move(head->more().params);
     } else {  // `function W, H { ... }`: W and H lead the children
         n->flag = true;
         n->children.insert(n->children.begin(), std::make_move_iterator(head->children.begin()),
@@ -229,12 +235,7 @@ NodePtr clone(const Node& n) {
     c->text = n.text;
     c->number = n.number;
     c->flag = n.flag;
-    c->ops = n.ops;
-    c->params = n.params;
-    c->optional_params = n.optional_params;
-    c->raw_begin = n.raw_begin;
-    c->raw_end = n.raw_end;
-    c->raw_loc = n.raw_loc;
+    if (n.extra) c->extra = std::make_unique<ast::NodeExtra>(*n.extra);
     c->children.reserve(n.children.size());
     for (const NodePtr& k : n.children) c->children.push_back(clone(*k));
     return c;
@@ -335,8 +336,8 @@ NodePtr macro_param(NodePtr n, std::string_view t, BuildState&) {
 NodePtr macro(NodePtr n, std::string_view, BuildState&) {
     n->text = std::move(pop_front(*n)->text);
     for (NodePtr& p : n->children) {
-        n->params.push_back(std::move(p->text));
-        n->optional_params.push_back(p->flag);
+        n->more().params.push_back(std::move(p->text));
+        n->more().optional_params.push_back(p->flag);
     }
     n->children.clear();
     return n;

@@ -35,11 +35,14 @@ public:
 
     void open(ast::Kind kind, const InputIterator& at);
     void close(Finisher finish, const char* end);
-    void discard() { frames_.pop_back(); }
-    std::size_t mark() const { return frames_.back().node->children.size(); }
+    void discard() {
+        frames_.pop_back();
+        top_ = &frames_.back().node->children;
+    }
+    // Every rule that may fail marks and truncates: kept to one load through top_.
+    std::size_t mark() const { return top_->size(); }
     void truncate(std::size_t mark) {
-        auto& kids = frames_.back().node->children;
-        if (kids.size() != mark) kids.resize(mark);
+        if (top_->size() != mark) top_->resize(mark);
     }
     // Moves the children appended since `mark` into a new node and appends its finished form.
     void wrap(ast::Kind kind, const InputIterator& at, std::size_t mark, Finisher finish,
@@ -60,6 +63,7 @@ public:
 private:
     const SourceFile* file_;
     std::vector<Frame> frames_;
+    std::vector<ast::NodePtr>* top_;  // the innermost frame's children (its node is on the heap)
     int depth_ = 0;
 };
 
@@ -132,6 +136,7 @@ using K = ast::Kind;
 
 // expressions
 LUMEN_NODE(number, makes<K::Number, finish::number>);
+LUMEN_NODE(signed_literal, makes<K::Number, finish::number>);
 LUMEN_NODE(string_literal, makes<K::String, finish::string>);
 LUMEN_NODE(ident, makes<K::Ident, finish::text>);
 LUMEN_NODE(spline_type_arg, makes<K::Ident, finish::text>);  // read by a spline call

@@ -40,7 +40,7 @@ struct Outcome {
 void parse_macros(const SourceFile& file, const ast::Node& n, Outcome& out) {
     if (n.kind == ast::Kind::Macro) {
         try {
-            ast::NodePtr body = parse_fragment(file, n.raw_begin, n.raw_end, n.raw_loc);
+            ast::NodePtr body = parse_fragment(file, n.more().raw_begin, n.more().raw_end, n.more().raw_loc);
             parse_macros(file, *body, out);
         } catch (const LumenError& e) {
             out.failed_macros.push_back(n.text);

@@ -19,6 +19,24 @@ TEST(Items, BlocksKeywordsCommasAndMaps) {
     EXPECT_EQ(items("a; b"), "(Ident a) (Semicolon) (Ident b)");
 }
 
+// A vector item is read by itself only where no operator, member or index follows it.
+TEST(Items, VectorItemsAndTheExpressionsThatContinueThem) {
+    EXPECT_EQ(items("m { <1,2,3>, <4,5,6> }"),
+              "(Block m (Vector (Number 1) (Number 2) (Number 3)) (Comma)"
+              " (Vector (Number 4) (Number 5) (Number 6)))");
+    EXPECT_EQ(items("m { <1,2,3> + <1,1,1> }"),
+              "(Block m (Binary (Vector (Number 1) (Number 2) (Number 3)) +"
+              " (Vector (Number 1) (Number 1) (Number 1))))");
+    EXPECT_EQ(items("m { <1,2,3> -<1,1,1> <1,2>.x <1,2>[0] }"),
+              "(Block m (Binary (Vector (Number 1) (Number 2) (Number 3)) -"
+              " (Vector (Number 1) (Number 1) (Number 1)))"
+              " (Member x (Vector (Number 1) (Number 2)))"
+              " (Index (Vector (Number 1) (Number 2)) (Number 0)))");
+    EXPECT_EQ(items("m { <1,2> <3,4> translate <5,6> }"),
+              "(Block m (Vector (Number 1) (Number 2)) (Vector (Number 3) (Number 4))"
+              " (Keyword translate) (Vector (Number 5) (Number 6)))");
+}
+
 TEST(Items, UnknownWordsStillFormBlocks) {
     EXPECT_EQ(items("spere { 1 }"), "(Block spere (Number 1))");
 }
@@ -113,17 +131,17 @@ TEST(Macros, RawBodyIsRecordedNotParsed) {
     const ast::Node& m = *p.root->children[0];
     ASSERT_EQ(m.kind, ast::Kind::Macro);
     EXPECT_EQ(m.text, "M");
-    EXPECT_EQ(m.params, (std::vector<std::string>{"A", "B"}));
-    EXPECT_EQ(m.optional_params, (std::vector<bool>{false, true}));
-    EXPECT_EQ(m.raw_loc.line, 1u);
-    EXPECT_EQ(m.raw_loc.column, 24u);
-    std::string raw = text.substr(m.raw_begin, m.raw_end - m.raw_begin);
+    EXPECT_EQ(m.more().params, (std::vector<std::string>{"A", "B"}));
+    EXPECT_EQ(m.more().optional_params, (std::vector<bool>{false, true}));
+    EXPECT_EQ(m.more().raw_loc.line, 1u);
+    EXPECT_EQ(m.more().raw_loc.column, 24u);
+    std::string raw = text.substr(m.more().raw_begin, m.more().raw_end - m.more().raw_begin);
     EXPECT_EQ(raw.substr(raw.size() - 1), "\n");
     EXPECT_NE(raw.find("nested */ */"), std::string::npos);
     EXPECT_EQ(dump(*p.root->children[1]), "(Call M (Number 1) (Number 2))");
 
     // The body parses on demand, with locations in the original file.
-    ast::NodePtr body = parse_fragment(*p.file, m.raw_begin, m.raw_end, m.raw_loc);
+    ast::NodePtr body = parse_fragment(*p.file, m.more().raw_begin, m.more().raw_end, m.more().raw_loc);
     ASSERT_EQ(body->children.size(), 2u);
     const ast::Node& if_node = *body->children[0];
     EXPECT_EQ(if_node.kind, ast::Kind::If);
@@ -142,7 +160,7 @@ TEST(Macros, NestedDirectivesFindTheMatchingEnd) {
 
 TEST(Macros, ParametersWithoutCommasAndTrailingComma) {
     auto p = parse_text("#macro M(A B, C,) #end");
-    EXPECT_EQ(p.root->children[0]->params, (std::vector<std::string>{"A", "B", "C"}));
+    EXPECT_EQ(p.root->children[0]->more().params, (std::vector<std::string>{"A", "B", "C"}));
 }
 
 TEST(OtherDirectives, VersionIncludeUndefDefaultMessages) {

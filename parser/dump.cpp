@@ -12,18 +12,18 @@ void write(std::ostringstream& out, const ast::Node& n) {
     if (n.kind == K::Number) out << ' ' << n.number;
     else if (n.kind == K::String) out << " \"" << n.text << '"';
     else if (!n.text.empty()) out << ' ' << n.text;
-    if (!n.params.empty()) {
+    if (!n.more().params.empty()) {
         out << " [";
-        for (std::size_t i = 0; i < n.params.size(); ++i) {
+        for (std::size_t i = 0; i < n.more().params.size(); ++i) {
             if (i) out << ' ';
-            if (i < n.optional_params.size() && n.optional_params[i]) out << "optional ";
-            out << n.params[i];
+            if (i < n.more().optional_params.size() && n.more().optional_params[i]) out << "optional ";
+            out << n.more().params[i];
         }
         out << ']';
     }
     if (n.kind == K::ArrayDecl && n.flag) out << " init";
     for (std::size_t i = 0; i < n.children.size(); ++i) {
-        if (n.kind == K::Binary && i > 0) out << ' ' << n.ops[i - 1];
+        if (n.kind == K::Binary && i > 0) out << ' ' << n.more().ops[i - 1];
         out << ' ';
         write(out, *n.children[i]);
     }

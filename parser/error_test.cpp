@@ -98,7 +98,7 @@ TEST(Nesting, HundredThousandTermSumIsOneFlatNode) {
     ast::NodePtr n = parse_expression(f);
     ASSERT_EQ(n->kind, ast::Kind::Binary);
     EXPECT_EQ(n->children.size(), 100001u);
-    EXPECT_EQ(n->ops.size(), 100000u);
+    EXPECT_EQ(n->more().ops.size(), 100000u);
 }
 
 TEST(Nesting, OtherDeepConstructs) {

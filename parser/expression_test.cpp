@@ -62,7 +62,11 @@ TEST(Expression, PostfixMemberAndIndex) {
 }
 
 TEST(Expression, VectorLiterals) {
-    EXPECT_EQ(expr("<1, -2, 3>"), "(Vector (Number 1) (Unary - (Number 2)) (Number 3))");
+    // A signed number that ends its component is one Number (the value of the unary minus).
+    EXPECT_EQ(expr("<1, -2, 3>"), "(Vector (Number 1) (Number -2) (Number 3))");
+    EXPECT_EQ(expr("<1, -2 * 3, - 4>"),
+              "(Vector (Number 1) (Binary (Unary - (Number 2)) * (Number 3)) (Unary - (Number 4)))");
+    EXPECT_EQ(expr("<-1.5e-3,2.>"), "(Vector (Number -0.0015) (Number 2))");
     EXPECT_EQ(expr("<1>"), "(Vector (Number 1))");
     EXPECT_EQ(expr("< -1 0 0 >"), "(Vector (Unary - (Number 1)) (Number 0) (Number 0))");
     EXPECT_EQ(expr("<1,2,3,>"), "(Vector (Number 1) (Number 2) (Number 3))");

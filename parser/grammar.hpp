@@ -126,8 +126,13 @@ struct word : word_if<any_word> {};
 
 // number := (digit+ ['.' digit*] | '.' digit+) [('e'|'E') ['+'|'-'] digit+]
 struct exponent : seq<one<'e', 'E'>, opt<one<'+', '-'>>, plus<digit>> {};
-struct number : seq<sor<seq<plus<digit>, opt<one<'.'>, star<digit>>>, seq<one<'.'>, plus<digit>>>,
-                    opt<exponent>> {};
+struct number_text : seq<sor<seq<plus<digit>, opt<one<'.'>, star<digit>>>, seq<one<'.'>, plus<digit>>>,
+                         opt<exponent>> {};
+struct number : number_text {};
+// A number with its minus sign, read as one Number where nothing but ',' or '>' follows it in
+// a vector: the same value as the unary minus, without the whole expression grammar (the
+// lists of big meshes are made of these).
+struct signed_literal : seq<opt<one<'-'>>, number_text> {};
 
 // string := '"' ('\\' any | any but '"')* '"'
 struct string_literal : delimited<'"', 0, skip_string, unterminated_string> {};
@@ -247,7 +252,8 @@ struct expression : seq<ternary_t<true>> {};
 // `box { <0,0,0> <1,1,1> }`, `[0 <0,1>]` and `Foo(off <1,2>)` read '<' as a new vector
 struct plain_expression : seq<ternary_t<false>> {};
 // vector_component := plain_expression ('>' closes the vector)
-struct vector_component : seq<plain_expression> {};
+struct literal_component : seq<signed_literal, at<sep, one<',', '>'>>> {};
+struct vector_component : sor<literal_component, plain_expression> {};
 
 // ---- items ----------------------------------------------------------------------------------
 
@@ -289,7 +295,11 @@ struct pwr_term : seq<TAO_PEGTL_KEYWORD("pwr"), sep, one<'('>, sep, plain_expres
 
 // item := directive | block | map_entry | ',' | ';' | poly_term | pwr_term | keyword
 //         | expression
-struct item : sor<directive, padded<block>, padded<map_entry>, padded<comma_item>,
+// A vector that no operator follows is an item by itself: tried first, it spares the lists of
+// big meshes the whole expression grammar.
+struct vector_item : seq<vector, not_at<one<'.', '['>>,
+                         not_at<sep, one<'+', '-', '*', '/', '&', '|', '?', '=', '!', '>'>>> {};
+struct item : sor<directive, padded<vector_item>, padded<block>, padded<map_entry>, padded<comma_item>,
                   padded<semicolon_item>, padded<poly_term>, padded<pwr_term>,
                   padded<keyword_item>,
                   padded<plain_expression>> {};
