@@ -12,8 +12,9 @@ packages=(
     bc  # bench/render_vs_povray.sh arithmetic
     python3  # tools/corpus, tools/compare-builds
 )
-# Optional: `--bench` adds what the benchmark charts need (make bench-radiosity).
-if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox); fi
+# Optional: `--bench` adds what the benchmarks need: gnuplot for the charts (make
+# bench-radiosity, bench/parse_scale.sh), Embree for bench/mesh_rays.cpp's comparison.
+if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox libembree-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do
