@@ -131,6 +131,20 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur);
 void read_container(ItemCursor& cur, const BlockValue& block, scene::Container& c);
 double positive_or_default(ItemCursor& cur, const Item& kw, double fallback, const char* shape);
 scene::ObjectPtr build_parametric(ItemCursor& cur);  // build_parametric.cpp
+// The object of an isosurface or parametric `shape` (named `name` in the warning): its
+// modifiers read (`extra` takes the shape's own keywords into `shape`), an empty container
+// warned about.
+template <class Shape, class Extra>
+scene::ObjectPtr contained_object(ItemCursor& cur, Shape& shape, const Extra& extra,
+                                  const std::vector<std::string>& words, const char* name) {
+    scene::Object obj;
+    obj.loc = cur.block_loc();
+    read_object_modifiers(cur, obj, extra, words);
+    if (shape.container.empty())
+        cur.warn(cur.block_loc(), std::string("the ") + name + "'s container is empty: nothing is drawn");
+    obj.shape = std::move(shape);
+    return std::make_shared<scene::Object>(std::move(obj));
+}
 // build_spline.cpp: a spline block's entries, and the type a keyword names.
 std::shared_ptr<const fn::Spline> build_spline(ItemCursor& cur);
 std::optional<fn::SplineType> spline_type(std::string_view word);

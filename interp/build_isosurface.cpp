@@ -88,13 +88,7 @@ scene::ObjectPtr build_isosurface(ItemCursor& cur) {
         }
         return true;
     };
-    scene::Object obj;
-    obj.loc = cur.block_loc();
-    read_object_modifiers(cur, obj, extra, kWords);
-    if (iso.container.empty())
-        cur.warn(cur.block_loc(), "the isosurface's container is empty: nothing is drawn");
-    obj.shape = std::move(iso);
-    return std::make_shared<scene::Object>(std::move(obj));
+    return contained_object(cur, iso, extra, kWords, "isosurface");
 }
 
 }  // namespace lumen::interp

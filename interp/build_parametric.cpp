@@ -76,13 +76,7 @@ scene::ObjectPtr build_parametric(ItemCursor& cur) {
         }
         return true;
     };
-    scene::Object obj;
-    obj.loc = cur.block_loc();
-    read_object_modifiers(cur, obj, extra, kWords);
-    if (p.container.empty())
-        cur.warn(cur.block_loc(), "the parametric's container is empty: nothing is drawn");
-    obj.shape = std::move(p);
-    return std::make_shared<scene::Object>(std::move(obj));
+    return contained_object(cur, p, extra, kWords, "parametric");
 }
 
 }  // namespace lumen::interp
