@@ -271,15 +271,10 @@ struct ShapeBoxes {
     }
     // POV-Ray's box: the container's (a sphere's cube).
     ShapeBox operator()(const scene::Isosurface& s) const {
-        const scene::Container& c = s.container;
-        if (c.sphere) return {{c.center - glm::dvec3(c.radius), c.center + glm::dvec3(c.radius)}};
-        return {{c.lo, c.hi}};
+        return {{s.container.box_min(), s.container.box_max()}};
     }
-    // POV-Ray's box: the container's, as for an isosurface.
     ShapeBox operator()(const scene::Parametric& s) const {
-        const scene::Container& c = s.container;
-        if (c.sphere) return {{c.center - glm::dvec3(c.radius), c.center + glm::dvec3(c.radius)}};
-        return {{c.lo, c.hi}};
+        return {{s.container.box_min(), s.container.box_max()}};
     }
     ShapeBox operator()(const scene::SphereSweep& s) const {
         Extents e;

@@ -297,6 +297,9 @@ struct Container {
     bool empty() const {
         return sphere ? !(radius > 0) : !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z);
     }
+    // POV-Ray's bounding box of the shape: the box, or the sphere's cube.
+    glm::dvec3 box_min() const { return sphere ? center - glm::dvec3(radius) : lo; }
+    glm::dvec3 box_max() const { return sphere ? center + glm::dvec3(radius) : hi; }
 };
 
 // isosurface { function { F } [contained_by { ... }] [threshold T] [accuracy A]

@@ -50,9 +50,6 @@ bool in_container(const scene::Container& c, const glm::dvec3& p) {
            p.z <= c.hi.z;
 }
 
-Aabb container_bounds(const scene::Container& c) {
-    if (c.sphere) return {c.center - glm::dvec3(c.radius), c.center + glm::dvec3(c.radius)};
-    return {c.lo, c.hi};
-}
+Aabb container_bounds(const scene::Container& c) { return {c.box_min(), c.box_max()}; }
 
 }  // namespace lumen::render

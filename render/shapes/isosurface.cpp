@@ -104,8 +104,9 @@ struct Search {
 
 glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
     const scene::Isosurface& iso = s.iso;
-    if (iso.container.sphere && std::fabs(glm::length(p - iso.container.center) - iso.container.radius) < 1e-10)
-        return glm::normalize(p - iso.container.center);
+    const scene::Container& c = iso.container;
+    if (c.sphere && std::fabs(glm::length(p - c.center) - c.radius) < 1e-10)
+        return glm::normalize(p - c.center);
     const double f0 = F(s, p), A = iso.accuracy;
     const glm::dvec3 n(F(s, p + glm::dvec3(A, 0, 0)) - f0, F(s, p + glm::dvec3(0, A, 0)) - f0,
                        F(s, p + glm::dvec3(0, 0, A)) - f0);
