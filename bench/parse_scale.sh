@@ -116,24 +116,18 @@ set logscale xy
 set key top left
 set grid
 set multiplot layout 2,2 title "Parsing big inputs: lumen against POV-Ray 3.7 (+W16 +H12 -F, median of $repeats)"
-set xlabel "triangles"
-set ylabel "wall seconds"
-set title "mesh2: time"
-plot "$csv" using (strcol(1) eq "mesh" ? \$2 : 1/0):4 with linespoints title "lumen", \
-     "" using (strcol(1) eq "mesh" ? \$2 : 1/0):5 with linespoints title "POV-Ray"
-set ylabel "peak MiB"
-set title "mesh2: memory"
-plot "$csv" using (strcol(1) eq "mesh" ? \$2 : 1/0):6 with linespoints title "lumen", \
-     "" using (strcol(1) eq "mesh" ? \$2 : 1/0):7 with linespoints title "POV-Ray"
-set xlabel "terms"
-set ylabel "wall seconds"
-set title "one long expression: time"
-plot "$csv" using (strcol(1) eq "expr" ? \$2 : 1/0):4 with linespoints title "lumen", \
-     "" using (strcol(1) eq "expr" ? \$2 : 1/0):5 with linespoints title "POV-Ray"
-set ylabel "peak MiB"
-set title "one long expression: memory"
-plot "$csv" using (strcol(1) eq "expr" ? \$2 : 1/0):6 with linespoints title "lumen", \
-     "" using (strcol(1) eq "expr" ? \$2 : 1/0):7 with linespoints title "POV-Ray"
+do for [i = 1:2] {
+    kind = word("mesh expr", i)
+    set xlabel word("triangles terms", i)
+    set ylabel "wall seconds"
+    set title (i == 1 ? "mesh2" : "one long expression") . ": time"
+    plot "$csv" using (strcol(1) eq kind ? \$2 : 1/0):4 with linespoints title "lumen", \
+         "" using (strcol(1) eq kind ? \$2 : 1/0):5 with linespoints title "POV-Ray"
+    set ylabel "peak MiB"
+    set title (i == 1 ? "mesh2" : "one long expression") . ": memory"
+    plot "$csv" using (strcol(1) eq kind ? \$2 : 1/0):6 with linespoints title "lumen", \
+         "" using (strcol(1) eq kind ? \$2 : 1/0):7 with linespoints title "POV-Ray"
+}
 unset multiplot
 EOF
     echo "wrote $out/parse_scale.png"
