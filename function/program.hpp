@@ -7,6 +7,7 @@
 // POV-Ray's function language has no assignments; numbered local slots hold sum()/prod()'s
 // counters and the compiler's temporaries (pow's base, select's test), at most kMaxLocals.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -74,6 +75,27 @@ struct Instr {
     }
 };
 
+struct Program;
+struct RegisterCode;
+
+// A program's register form (register_code.hpp), lowered on its first run and kept. Copies
+// start without it. Two threads' first runs may both lower; one result is kept.
+class LoweredCode {
+public:
+    LoweredCode() = default;
+    LoweredCode(const LoweredCode&) {}
+    LoweredCode& operator=(const LoweredCode&) {
+        reset();
+        return *this;
+    }
+    ~LoweredCode() { reset(); }
+    const RegisterCode& get(const Program& program) const;
+
+private:
+    void reset();
+    mutable std::atomic<const RegisterCode*> code_{nullptr};
+};
+
 struct Program {
     std::vector<Instr> code;
     std::vector<double> consts;
@@ -83,6 +105,7 @@ struct Program {
     std::vector<External> externals;
     std::vector<std::shared_ptr<const Spline>> splines;
     bool needs_host = false;  // it or a callee has externals
+    LoweredCode lowered;      // made from the fields above, which must not change after a run
     template <class Self, class F> static void fields(Self& s, F&& f) {
         f("code", s.code), f("consts", s.consts), f("params", s.params), f("callees", s.callees),
             f("externals", s.externals), f("splines", s.splines);

@@ -1,9 +1,11 @@
 #include "function/vm.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "function/internal.hpp"
+#include "function/register_code.hpp"
 
 namespace lumen::fn {
 
@@ -62,93 +64,103 @@ double member(const double* c, int m) {
 double pov_min(double running, double next) { return running <= next ? running : next; }
 double pov_max(double running, double next) { return next > running ? next : running; }
 
-double run(const Program& p, const double* args, const Context& context, int component,
-           int depth) {
-    double stack[kMaxStack];
-    double locals[kMaxLocals];
-    int sp = 0;
-    const Instr* code = p.code.data();
-    const size_t n = p.code.size();
-    for (size_t pc = 0; pc < n; ++pc) {
-        const Instr& in = code[pc];
-        switch (in.op) {
-            case Op::Const: stack[sp++] = p.consts[in.a]; break;
-            case Op::Arg: stack[sp++] = args[in.a]; break;
-            case Op::Local: stack[sp++] = locals[in.a]; break;
-            case Op::SetLocal: locals[in.a] = stack[--sp]; break;
-            case Op::Add: --sp; stack[sp - 1] += stack[sp]; break;
-            case Op::Sub: --sp; stack[sp - 1] -= stack[sp]; break;
-            case Op::Mul: --sp; stack[sp - 1] *= stack[sp]; break;
-            case Op::Div: --sp; stack[sp - 1] /= stack[sp]; break;
-            case Op::Neg: stack[sp - 1] = -stack[sp - 1]; break;
-            case Op::AddConst: stack[sp - 1] += p.consts[in.a]; break;
-            case Op::SubConst: stack[sp - 1] -= p.consts[in.a]; break;
-            case Op::MulConst: stack[sp - 1] *= p.consts[in.a]; break;
-            case Op::Lt: --sp; stack[sp - 1] = stack[sp - 1] < stack[sp]; break;
-            case Op::Le: --sp; stack[sp - 1] = stack[sp - 1] <= stack[sp]; break;
-            case Op::Eq: --sp; stack[sp - 1] = stack[sp - 1] == stack[sp]; break;
+// One run in a frame of N registers (N at least the program's frame).
+template <int N>
+double run_in(const RegisterCode& rc, const Program& p, const double* args,
+              const Context& context, int component, int depth) {
+    double r[N];
+    std::memcpy(r, p.consts.data(), sizeof(double) * size_t(rc.frame_consts));
+    double* const a = r + rc.frame_consts;
+    for (int i = 0; i < rc.args; ++i) a[i] = i < p.params ? args[i] : 0.0;
+    for (const RInstr* in = rc.code.data();; ++in) {
+        switch (in->op) {
+            case ROp::Move: r[in->d] = r[in->s]; break;
+            case ROp::LoadConst: r[in->d] = p.consts[in->a]; break;
+            case ROp::Add: r[in->d] = r[in->s] + r[in->t]; break;
+            case ROp::Sub: r[in->d] = r[in->s] - r[in->t]; break;
+            case ROp::Mul: r[in->d] = r[in->s] * r[in->t]; break;
+            case ROp::Div: r[in->d] = r[in->s] / r[in->t]; break;
+            case ROp::Neg: r[in->d] = -r[in->s]; break;
+            case ROp::Lt: r[in->d] = r[in->s] < r[in->t]; break;
+            case ROp::Le: r[in->d] = r[in->s] <= r[in->t]; break;
+            case ROp::Eq: r[in->d] = r[in->s] == r[in->t]; break;
             // POV implements these as "not less" and "not equal": NaN gives 1.
-            case Op::Ne: --sp; stack[sp - 1] = !(stack[sp - 1] == stack[sp]); break;
-            case Op::Ge: --sp; stack[sp - 1] = !(stack[sp - 1] < stack[sp]); break;
-            case Op::Gt: --sp; stack[sp - 1] = !(stack[sp - 1] <= stack[sp]); break;
-            case Op::And: --sp; stack[sp - 1] = (stack[sp - 1] != 0) && (stack[sp] != 0); break;
-            case Op::Or: --sp; stack[sp - 1] = (stack[sp - 1] != 0) || (stack[sp] != 0); break;
-            case Op::Math1: stack[sp - 1] = math1(Math1(in.a), stack[sp - 1]); break;
-            case Op::Math2: --sp; stack[sp - 1] = math2(Math2(in.a), stack[sp - 1], stack[sp]); break;
-            case Op::Min: --sp; stack[sp - 1] = pov_min(stack[sp - 1], stack[sp]); break;
-            case Op::Max: --sp; stack[sp - 1] = pov_max(stack[sp - 1], stack[sp]); break;
-            case Op::Jump: pc = size_t(in.a) - 1; break;
-            case Op::JumpIfNotNeg: if (!(stack[--sp] < 0)) pc = size_t(in.a) - 1; break;
-            case Op::JumpIfNotZero: if (!(stack[--sp] == 0)) pc = size_t(in.a) - 1; break;
-            case Op::JumpIfGreater:
-                sp -= 2;
-                if (!(stack[sp] <= stack[sp + 1])) pc = size_t(in.a) - 1;
+            case ROp::Ne: r[in->d] = !(r[in->s] == r[in->t]); break;
+            case ROp::Ge: r[in->d] = !(r[in->s] < r[in->t]); break;
+            case ROp::Gt: r[in->d] = !(r[in->s] <= r[in->t]); break;
+            case ROp::And: r[in->d] = (r[in->s] != 0) && (r[in->t] != 0); break;
+            case ROp::Or: r[in->d] = (r[in->s] != 0) || (r[in->t] != 0); break;
+            case ROp::Math1: r[in->d] = math1(Math1(in->a), r[in->s]); break;
+            case ROp::Math2: r[in->d] = math2(Math2(in->a), r[in->s], r[in->t]); break;
+            case ROp::Min: r[in->d] = pov_min(r[in->s], r[in->t]); break;
+            case ROp::Max: r[in->d] = pov_max(r[in->s], r[in->t]); break;
+            case ROp::Jump: in = rc.code.data() + in->a - 1; break;
+            case ROp::JumpIfNotNeg:
+                if (!(r[in->s] < 0)) in = rc.code.data() + in->a - 1;
                 break;
-            case Op::Internal:
-                sp -= in.b;
-                stack[sp] = internal(int(in.a), stack + sp, context.noise_generator);
-                ++sp;
+            case ROp::JumpIfNotZero:
+                if (!(r[in->s] == 0)) in = rc.code.data() + in->a - 1;
                 break;
-            case Op::External: {
-                sp -= 3;
+            case ROp::JumpIfGreater:
+                if (!(r[in->s] <= r[in->t])) in = rc.code.data() + in->a - 1;
+                break;
+            case ROp::Internal:
+                r[in->d] = internal(int(in->a), r + in->s, context.noise_generator);
+                break;
+            case ROp::External: {
                 double out[5] = {0, 0, 0, 0, 0};
-                if (context.host) context.host->evaluate(p.externals[in.a], stack + sp, out);
+                if (context.host) context.host->evaluate(p.externals[in->a], r + in->s, out);
                 else out[0] = out[1] = out[2] = out[3] = out[4] = std::nan("");
-                stack[sp++] = member(out, in.c == kMemberAsked ? component : in.c);
+                r[in->d] = member(out, in->c == kMemberAsked ? component : in->c);
                 break;
             }
-            case Op::Transform: {
-                sp -= 3;
-                const double* m = p.consts.data() + in.a;
-                const double* v = stack + sp;
+            case ROp::Transform: {
+                const double* m = p.consts.data() + in->a;
+                const double* v = r + in->s;
                 double out[3];
-                for (int r = 0; r < 3; ++r) out[r] = m[4 * r] * v[0] + m[4 * r + 1] * v[1] + m[4 * r + 2] * v[2] + m[4 * r + 3];
-                const int c = in.c == kMemberAsked ? component : in.c;
-                stack[sp++] = c < 3 ? out[c] : 0;
+                for (int i = 0; i < 3; ++i) out[i] = m[4 * i] * v[0] + m[4 * i + 1] * v[1] + m[4 * i + 2] * v[2] + m[4 * i + 3];
+                const int c = in->c == kMemberAsked ? component : in->c;
+                r[in->d] = c < 3 ? out[c] : 0;
                 break;
             }
-            case Op::Spline: {
-                const std::array<double, 5> v = p.splines[in.a]->at(stack[sp - 1]);
-                stack[sp - 1] = member(v.data(), in.c == kMemberAsked ? component : in.c);
+            case ROp::Spline: {
+                const std::array<double, 5> v = p.splines[in->a]->at(r[in->s]);
+                r[in->d] = member(v.data(), in->c == kMemberAsked ? component : in->c);
                 break;
             }
-            case Op::Call: {
-                sp -= in.b;
-                const Program& callee = *p.callees[in.a];
+            case ROp::Call:
                 // Recursion is refused when functions are compiled; the depth only guards
                 // against a chain longer than POV-Ray allows.
-                stack[sp] = depth < kMaxCallDepth
-                                ? run(callee, stack + sp, context, in.c, depth + 1)
-                                : std::nan("");
-                ++sp;
+                r[in->d] = depth < kMaxCallDepth
+                               ? run(*p.callees[in->a], r + in->s, context, in->c, depth + 1)
+                               : std::nan("");
                 break;
-            }
+            case ROp::Return: return in->a ? 0.0 : r[in->s];
         }
     }
-    return sp > 0 ? stack[sp - 1] : 0;
+}
+
+// Small frames (most functions) take little of the C++ stack, which chains of calls share.
+double run(const Program& p, const double* args, const Context& context, int component,
+           int depth) {
+    const RegisterCode& rc = p.lowered.get(p);
+    if (rc.frame <= 32) return run_in<32>(rc, p, args, context, component, depth);
+    if (rc.frame <= 128) return run_in<128>(rc, p, args, context, component, depth);
+    return run_in<kMaxFrame>(rc, p, args, context, component, depth);
 }
 
 }  // namespace
+
+const RegisterCode& LoweredCode::get(const Program& program) const {
+    if (const RegisterCode* c = code_.load(std::memory_order_acquire)) return *c;
+    const RegisterCode* made = new RegisterCode(lower(program));
+    const RegisterCode* expected = nullptr;
+    if (code_.compare_exchange_strong(expected, made, std::memory_order_acq_rel)) return *made;
+    delete made;
+    return *expected;
+}
+
+void LoweredCode::reset() { delete code_.exchange(nullptr); }
 
 double evaluate(const Program& program, std::span<const double> args, const Context& context,
                 int component) {

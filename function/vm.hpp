@@ -28,6 +28,8 @@ inline constexpr int kMaxCallDepth = 1024;
 // The deepest stack one program may need, and its locals (the compiler refuses more).
 inline constexpr int kMaxStack = 256;
 inline constexpr int kMaxLocals = 16;
+// The most parameters a function may name (POV-Ray's limit: 57 are "Missing {").
+inline constexpr int kMaxParams = 56;
 
 // The function's value at `args` (program.params of them; the compiler checks counts). For a
 // vector function, component `component`.

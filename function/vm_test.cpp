@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "function/register_code.hpp"
+
 namespace lumen::fn {
 namespace {
 
@@ -67,6 +69,23 @@ TEST(FunctionVm, SumLoopsWhileTheCounterIsAtMostTheLimit) {
               /*18*/ op(Op::Local, 2)};
     EXPECT_EQ(run1(p, 3), 4.5);  // 0.5 + 1.5 + 2.5
     EXPECT_EQ(run1(p, 0), 0);    // empty
+}
+
+// The register form (lower.cpp) reads constants beyond the frame's share where they are used,
+// and moves a local's pending value aside before the local is set again.
+TEST(FunctionVm, ConstantsBeyondTheFrameAndLocalsSetAgain) {
+    Program p;
+    for (int i = 0; i < kFrameConsts + 40; ++i) p.consts.push_back(i * 0.25);
+    const uint32_t far = kFrameConsts + 30;  // 7.5 + kFrameConsts / 4
+    p.code = {op(Op::Arg, 0), op(Op::Arg, 1), op(Op::Add), op(Op::AddConst, far),
+              op(Op::Const, far), op(Op::Mul)};
+    EXPECT_EQ(run1(p, 1, 2), (3 + far * 0.25) * (far * 0.25));
+
+    // locals[0] = x; push it; locals[0] = y; push it: x - y, not y - y.
+    Program q;
+    q.code = {op(Op::Arg, 0), op(Op::SetLocal, 0), op(Op::Local, 0), op(Op::Arg, 1),
+              op(Op::SetLocal, 0), op(Op::Local, 0), op(Op::Sub)};
+    EXPECT_EQ(run1(q, 5, 7), -2);
 }
 
 TEST(FunctionVm, CallsTransformsAndExternals) {

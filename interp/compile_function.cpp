@@ -48,6 +48,10 @@ public:
         } else {
             params_ = block.more().params;
         }
+        if (params_.size() > size_t(fn::kMaxParams))
+            fail(block.loc, "a function takes at most " + std::to_string(fn::kMaxParams) +
+                                " parameters, as in POV-Ray; this one names " +
+                                std::to_string(params_.size()));
         p_.params = int(params_.size());
     }
 

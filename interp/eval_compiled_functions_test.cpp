@@ -88,6 +88,13 @@ TEST_F(CompiledFunctionTest, LocatedErrorsForWhatFunctionsCannotDo) {
               "test.pov:1:25: error: 'rand' cannot be c");
     EXPECT_EQ(error_of("#declare G = function(a) { a }\n#declare F = function { G(x, y) }"),
               "test.pov:2:25: error: function 'G' takes 1 argument(s), found 2");
+    // POV-Ray takes 56 parameters and stops at 57 ("Missing {").
+    std::string params = "p0";
+    for (int i = 1; i < 57; ++i) params += ", p" + std::to_string(i);
+    EXPECT_EQ(error_of("#declare F = function(" + params + ") { p0 }"),
+              "test.pov:1:14: error: a function takes at most 56 parameters, as in POV-Ray; this "
+              "one names 57");
+    EXPECT_EQ(error_of("#declare F = function(" + params.substr(0, params.rfind(',')) + ") { p55 }"), "");
     // A pattern is given x, y, z only: a function of four parameters cannot be one.
     EXPECT_EQ(error_of("#declare P4 = function(a, b, c, d) { a }\nsphere { 0, 1 pigment { P4 } }"),
               "test.pov:2:25: error: a pattern function is given x, y and z: this one takes 4 "
