@@ -4,6 +4,7 @@
 
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
+#include "interp/literal_items.hpp"
 
 namespace lumen::interp {
 
@@ -53,8 +54,14 @@ Value Evaluator::declared_value(const ast::Node& n, size_t rhs) {
         if (run_item(*n.children[rhs], items) == Flow::Break)
             throw LumenError(n.loc, "#break in the value of a #" + n.text);
     } else {
-        for (size_t i = rhs; i < n.children.size(); ++i) items.push_back(Item{Item::Kind::Value, {}, eval(*n.children[i]), {}, n.children[i]->loc});
+        for (size_t i = rhs; i < n.children.size(); ++i) {
+            Item it;
+            it.value = eval(*n.children[i]);
+            it.loc = n.children[i]->loc;
+            items.push_back(std::move(it));
+        }
     }
+    expand_literals(items);
     if (items.size() == 1 && items[0].kind == Item::Kind::Value) {
         Value v = std::move(items[0].value);
         if (v.is<std::shared_ptr<ArrayValue>>())  // assignment copies an array

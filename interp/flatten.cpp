@@ -3,6 +3,7 @@
 #include <string_view>
 
 #include "interp/evaluator.hpp"
+#include "interp/literal_items.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
@@ -36,6 +37,7 @@ void Evaluator::run_main(const ast::Node& body, const SourceFile& file,
     std::vector<Item> items;
     for (const ast::NodePtr& n : body.children) {
         run_item(*n, items);
+        expand_literals(items);
         for (const Item& it : items) emit(it);
         items.clear();
     }
@@ -97,6 +99,14 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
         case Kind::Semicolon:
         case Kind::Null:
             return Flow::Normal;
+        case Kind::Literals: {
+            Item it;
+            it.kind = Item::Kind::Literals;
+            it.loc = node.loc;
+            it.literals = &node.more().literals;
+            out.push_back(std::move(it));
+            return Flow::Normal;
+        }
         case Kind::PolyTerm:  // the keyword `xyz`, then <i, j, k, c>
         case Kind::PwrTerm: {  // the keyword `pwr`, then <a, b>
             out.push_back(keyword_item(node.kind == Kind::PolyTerm ? "xyz" : "pwr", node.loc));
@@ -110,6 +120,7 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
             it.kind = Item::Kind::MapEntry;
             it.loc = node.loc;
             it.entry = flatten_sealed(node.children);
+            expand_literals(it.entry);  // entries are short; their readers count values
             out.push_back(std::move(it));
             return Flow::Normal;
         }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "interp/literal_items.hpp"
+
 namespace lumen::interp {
 
 namespace {
@@ -74,6 +76,7 @@ std::string describe_item(const Item& item) {
         case Item::Kind::Keyword: return "'" + item.keyword + "'";
         case Item::Kind::Comma: return "','";
         case Item::Kind::MapEntry: return "a map entry '[...]'";
+        case Item::Kind::Literals: return "a list of numbers";
         case Item::Kind::Value: return describe_value(item.value);
     }
     return "an item";
@@ -87,26 +90,53 @@ ItemCursor::ItemCursor(BuildContext& ctx, const BlockValue& block)
     : ItemCursor(ctx, block.items, block.keyword, block.loc) {}
 
 void ItemCursor::skip_commas() {
-    while (pos_ < items_.size() && items_[pos_].kind == Item::Kind::Comma) ++pos_;
+    while (pos_ < items_.size()) {
+        const Item& it = items_[pos_];
+        if (it.kind == Item::Kind::Comma) {
+            ++pos_;
+        } else if (it.kind == Item::Kind::Literals) {
+            const ast::LiteralRun& run = *it.literals;
+            while (element_ < run.sizes.size() && run.sizes[element_] == 0) ++element_;
+            if (element_ < run.sizes.size()) return;
+            ++pos_;
+            element_ = offset_ = 0;
+            expanded_ = false;
+        } else {
+            return;
+        }
+    }
 }
 
-bool ItemCursor::at_end() {
+const Item* ItemCursor::current() {
     skip_commas();
-    return pos_ >= items_.size();
+    if (pos_ >= items_.size()) return nullptr;
+    const Item& it = items_[pos_];
+    if (it.kind != Item::Kind::Literals) return &it;
+    if (!expanded_) {
+        ring_at_ = (ring_at_ + 1) % kRing;
+        ring_[ring_at_] = literal_item(*it.literals, element_, offset_, it.loc.file);
+        expanded_ = true;
+    }
+    return &ring_[ring_at_];
 }
 
-const Item& ItemCursor::peek() {
-    skip_commas();
-    return items_[pos_];
-}
+bool ItemCursor::at_end() { return current() == nullptr; }
+
+const Item& ItemCursor::peek() { return *current(); }
 
 const Item& ItemCursor::next() {
-    skip_commas();
-    last_ = &items_[pos_++];
-    return *last_;
+    const Item& it = *current();
+    last_loc_ = it.loc;
+    if (items_[pos_].kind == Item::Kind::Literals) {
+        offset_ += items_[pos_].literals->sizes[element_++];
+        expanded_ = false;
+    } else {
+        ++pos_;
+    }
+    return it;
 }
 
-SourceLoc ItemCursor::here() const { return last_ ? last_->loc : block_loc_; }
+SourceLoc ItemCursor::here() const { return last_loc_ ? *last_loc_ : block_loc_; }
 
 bool ItemCursor::next_is_keyword(std::string_view word) {
     if (at_end() || peek().kind != Item::Kind::Keyword) return false;

@@ -2,6 +2,7 @@
 // at a time, with typed expectations ("expected a vector after 'translate'") and optional
 // commas between arguments.
 #pragma once
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -77,12 +78,24 @@ private:
     // Folds trailing `filter 0.5`, `transmit 0.2`, `red 1` ... keyword items into `c`.
     void read_colour_components(scene::Colour& c);
 
+    // The item at the cursor (after commas), expanded from a literal run if it is in one;
+    // null at the end.
+    const Item* current();
+
     BuildContext& ctx_;
     const std::vector<Item>& items_;
     std::string what_;
     SourceLoc block_loc_;
     size_t pos_ = 0;
-    const Item* last_ = nullptr;
+    // Inside a Literals item: the element and where its values start.
+    size_t element_ = 0, offset_ = 0;
+    // Elements read from runs, the latest at ring_[ring_at_] (valid when expanded_): a
+    // reference peek() or next() returned stays good for the next kRing - 1 reads.
+    static constexpr size_t kRing = 8;
+    std::array<Item, kRing> ring_;
+    size_t ring_at_ = 0;
+    bool expanded_ = false;
+    std::optional<SourceLoc> last_loc_;
 };
 
 }  // namespace lumen::interp

@@ -3,6 +3,7 @@
 // passed by reference: the parameter's final value is copied back to it (POV-Ray 3.7 does
 // this even for `#local Param = ...`).
 #include "interp/evaluator.hpp"
+#include "interp/literal_items.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
@@ -66,6 +67,7 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
 Value Evaluator::call_macro_value(const ast::Node& macro, const ast::Node& call) {
     std::vector<Item> items;
     call_macro(macro, call, items);
+    expand_literals(items);
     if (items.size() != 1 || items[0].kind != Item::Kind::Value)
         throw LumenError(call.loc, "macro '" + macro.text + "' used in an expression produced " +
                                        std::to_string(items.size()) + " items");

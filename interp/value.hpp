@@ -91,11 +91,14 @@ struct Value {
 
 // One evaluated item of a block body.
 struct Item {
-    enum class Kind { Keyword, Value, Comma, MapEntry } kind = Kind::Value;
+    enum class Kind { Keyword, Value, Comma, MapEntry, Literals } kind = Kind::Value;
     std::string keyword;                 // Keyword
     Value value;                         // Value (nested blocks arrive as built values)
     std::vector<Item> entry;             // MapEntry: the flattened items inside [ ]
     SourceLoc loc;
+    // Literals: a run of floats, vectors and commas, one item each when read
+    // (literal_items.hpp); the run belongs to the syntax tree, which outlives evaluation.
+    const ast::LiteralRun* literals = nullptr;
 };
 
 // A block the core evaluator does not build itself: its keyword and flattened items.

@@ -1,6 +1,17 @@
 #include "parser/ast.hpp"
 
+#include <algorithm>
+
 namespace lumen::ast {
+
+SourceLoc LiteralRun::loc(const SourceFile* file, size_t i) const {
+    const uint32_t byte = bytes[i];
+    // The last line starting at or before the element (elements and lines are in order).
+    auto it = std::upper_bound(lines.begin(), lines.end(), byte,
+                               [](uint32_t b, const Line& l) { return b < l.start; });
+    const Line& line = *(it - 1);
+    return SourceLoc{file, line.number, byte - line.start + 1, byte};
+}
 
 const char* kind_name(Kind k) {
     switch (k) {
@@ -25,6 +36,7 @@ const char* kind_name(Kind k) {
         case Kind::Semicolon: return "Semicolon";
         case Kind::PolyTerm: return "PolyTerm";
         case Kind::PwrTerm: return "PwrTerm";
+        case Kind::Literals: return "Literals";
         case Kind::Body: return "Body";
         case Kind::Version: return "Version";
         case Kind::Include: return "Include";

@@ -49,6 +49,8 @@ enum class Kind {
     Semicolon,  // ';' outside a directive (accepted and ignored)
     PolyTerm,   // xyz(i, j, k): c in a polynomial block; children = i, j, k, c
     PwrTerm,    // pwr(a, b) in a julia_fractal block: children = a, b
+    Literals,   // a run of literal items (numbers, vectors of literal numbers, commas) kept
+                // as arrays: `literals` (LiteralRun), no children. The lists of big meshes.
 
     // ---- directives (may appear wherever an item may) ---------------------------------
     Body,       // a sequence of items: the whole file, a directive branch, a macro body
@@ -88,12 +90,34 @@ using NodePtr = std::unique_ptr<Node>;
 
 // What only a few kinds of node have, kept apart so that the many small nodes (numbers,
 // vectors, identifiers) stay small.
+// A run of at least kMinLiteralRun literal floats and vectors (with the commas between them)
+// in a block body, as the grammar's literal_run reads it: what would be one Number or Vector
+// node per value is a few bytes per value here. The interpreter hands the run on as one item
+// and expands it one element at a time (interp/literal_items.hpp), with each element's own
+// location, so nothing downstream can tell the difference.
+struct LiteralRun {
+    std::vector<double> values;   // every element's components, in order
+    std::vector<uint32_t> bytes;  // each element's offset into the file
+    std::vector<uint8_t> sizes;   // each element: 0 a comma, 1 a float, 2..5 a vector
+    struct Line {
+        uint32_t start;   // offset of the line's first byte
+        uint32_t number;  // 1-based
+    };
+    std::vector<Line> lines;      // each line elements start on, in order
+    size_t value_elements = 0;    // floats and vectors
+
+    // Element i's location in `file`.
+    SourceLoc loc(const SourceFile* file, size_t i) const;
+};
+inline constexpr size_t kMinLiteralRun = 8;
+
 struct NodeExtra {
     std::vector<std::string> ops;      // Binary operators
     std::vector<std::string> params;   // Block function params, Macro params
     std::vector<bool> optional_params; // Macro
     uint32_t raw_begin = 0, raw_end = 0;  // Macro body byte range
     SourceLoc raw_loc;                     // Macro body start
+    LiteralRun literals;                   // Literals
 };
 
 struct Node {

@@ -2,6 +2,7 @@
 #include "parser/build_ast.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -23,6 +24,43 @@ SourceLoc BuildState::loc(const InputIterator& it) const {
 void BuildState::open(Kind kind, const InputIterator& at) {
     frames_.push_back({std::make_unique<Node>(kind, loc(at)), at.data});
     top_ = &frames_.back().node->children;
+}
+
+void BuildState::open_literals(const InputIterator& at) {
+    open(Kind::Literals, at);
+    run_ = &frames_.back().node->more().literals;
+}
+
+void BuildState::close_literals(bool ok, const char* end) {
+    if (ok) {
+        // Exact sizes: the run stays as long as the tree.
+        run_->values.shrink_to_fit();
+        run_->bytes.shrink_to_fit();
+        run_->sizes.shrink_to_fit();
+        run_->lines.shrink_to_fit();
+        close(finish::keep, end);
+    } else {
+        discard();
+    }
+    run_ = nullptr;
+}
+
+bool BuildState::literal_value(const char* begin, const char* end) {
+    double v;
+    if (std::from_chars(begin, end, v).ec != std::errc() || !std::isfinite(v)) return false;
+    run_->values.push_back(v);
+    return true;
+}
+
+bool BuildState::literal_element(const InputIterator& at, std::size_t mark) {
+    const std::size_t size = run_->values.size() - mark;
+    if (size > 5 || (size == 1 && *at.data == '<')) return false;  // <1> is not a vector
+    run_->bytes.push_back(uint32_t(at.byte));
+    run_->sizes.push_back(uint8_t(size));
+    if (run_->lines.empty() || run_->lines.back().number != at.line)
+        run_->lines.push_back({uint32_t(at.byte - (at.column - 1)), uint32_t(at.line)});
+    if (size > 0) ++run_->value_elements;
+    return true;
 }
 
 void BuildState::close(Finisher finish, const char* end) {

@@ -60,11 +60,24 @@ public:
     // The single node built under the root frame.
     ast::NodePtr take_result();
 
+    // Literal runs (grammar.hpp's literal_run): one Literals frame, filled in place.
+    void open_literals(const InputIterator& at);
+    void close_literals(bool ok, const char* end);  // appends the node if ok, else drops it
+    std::size_t literal_mark() const { return run_->values.size(); }
+    void literal_truncate(std::size_t mark) { run_->values.resize(mark); }
+    // Appends the float written in [begin, end); false (nothing appended) if it is not finite.
+    bool literal_value(const char* begin, const char* end);
+    // Records the element that started at `at` with the values appended since `mark`: a
+    // comma (none), a float (one) or a vector (2 to 5; false for other counts).
+    bool literal_element(const InputIterator& at, std::size_t mark);
+    bool literal_run_long_enough() const { return run_->value_elements >= ast::kMinLiteralRun; }
+
 private:
     const SourceFile* file_;
     std::vector<Frame> frames_;
     std::vector<ast::NodePtr>* top_;  // the innermost frame's children (its node is on the heap)
     int depth_ = 0;
+    ast::LiteralRun* run_ = nullptr;  // the open Literals frame's run
 };
 
 // ---- finishers (build_ast.cpp) ------------------------------------------------------------
@@ -96,6 +109,24 @@ ast::NodePtr macro(ast::NodePtr n, std::string_view, BuildState&);
 }  // namespace finish
 
 // ---- which rules build which nodes ----------------------------------------------------------
+
+// The rules of a literal run, which fill its ast::LiteralRun instead of building nodes.
+enum class LiteralRole { None, Run, Vector, Number, Comma, Component };
+template <typename Rule>
+struct literal_traits {
+    static constexpr LiteralRole role = LiteralRole::None;
+};
+#define LUMEN_LITERAL(rule, r)                   \
+    template <>                                  \
+    struct literal_traits<rules::rule> {         \
+        static constexpr LiteralRole role = r;   \
+    }
+LUMEN_LITERAL(literal_run, LiteralRole::Run);
+LUMEN_LITERAL(run_vector, LiteralRole::Vector);
+LUMEN_LITERAL(run_number, LiteralRole::Number);
+LUMEN_LITERAL(run_comma, LiteralRole::Comma);
+LUMEN_LITERAL(run_component, LiteralRole::Component);
+#undef LUMEN_LITERAL
 
 // Default: a rule builds nothing and does not nest.
 template <typename Rule>

@@ -19,6 +19,8 @@ struct build_control : tao::pegtl::normal<Rule> {
         // Lookaheads (at<>, not_at<>) run without actions: build nothing there.
         if constexpr (A == tao::pegtl::apply_mode::nothing) {
             return base::template match<A, M, Action, Control>(in, st);
+        } else if constexpr (literal_traits<Rule>::role != LiteralRole::None) {
+            return match_literal<A, M, Action, Control>(in, st);
         } else {
             if constexpr (traits::nests) st.enter(in.iterator());
             bool ok;
@@ -40,6 +42,37 @@ struct build_control : tao::pegtl::normal<Rule> {
             }
             if constexpr (traits::nests) st.leave();
             return ok;
+        }
+    }
+
+    // A literal run's rules fill the run; each may still fail after matching (a value that
+    // overflows, a vector of 6, a run too short), so each rewinds its input itself.
+    template <tao::pegtl::apply_mode A, tao::pegtl::rewind_mode M,
+              template <typename...> class Action, template <typename...> class Control,
+              typename ParseInput>
+    static bool match_literal(ParseInput& in, BuildState& st) {
+        using base = tao::pegtl::normal<Rule>;
+        constexpr LiteralRole role = literal_traits<Rule>::role;
+        auto m = in.template mark<M>();
+        constexpr auto next = decltype(m)::next_rewind_mode;
+        const InputIterator at = in.iterator();
+        if constexpr (role == LiteralRole::Run) {
+            st.open_literals(at);
+            const bool ok = base::template match<A, next, Action, Control>(in, st) &&
+                            st.literal_run_long_enough();
+            st.close_literals(ok, in.current());
+            return m(ok);
+        } else {
+            const std::size_t mark = st.literal_mark();
+            bool ok = base::template match<A, next, Action, Control>(in, st);
+            if constexpr (role == LiteralRole::Component)
+                ok = ok && st.literal_value(at.data, in.current());
+            else if constexpr (role == LiteralRole::Number)
+                ok = ok && st.literal_value(at.data, in.current()) && st.literal_element(at, mark);
+            else
+                ok = ok && st.literal_element(at, mark);
+            if (!ok) st.literal_truncate(mark);
+            return m(ok);
         }
     }
 

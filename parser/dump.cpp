@@ -22,6 +22,16 @@ void write(std::ostringstream& out, const ast::Node& n) {
         out << ']';
     }
     if (n.kind == K::ArrayDecl && n.flag) out << " init";
+    if (n.kind == K::Literals) {  // ", " for a comma, "1" for a float, "<1 2 3>" for a vector
+        const ast::LiteralRun& run = n.more().literals;
+        for (std::size_t i = 0, at = 0; i < run.sizes.size(); at += run.sizes[i++]) {
+            out << ' ';
+            if (run.sizes[i] == 0) out << ',';
+            else if (run.sizes[i] == 1) out << run.values[at];
+            for (std::size_t k = 0; run.sizes[i] > 1 && k < run.sizes[i]; ++k)
+                out << (k ? ' ' : '<') << run.values[at + k] << (k + 1 == run.sizes[i] ? ">" : "");
+        }
+    }
     for (std::size_t i = 0; i < n.children.size(); ++i) {
         if (n.kind == K::Binary && i > 0) out << ' ' << n.more().ops[i - 1];
         out << ' ';

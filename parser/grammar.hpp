@@ -293,13 +293,27 @@ struct poly_term : seq<TAO_PEGTL_KEYWORD("xyz"), sep, one<'('>, sep, plain_expre
 struct pwr_term : seq<TAO_PEGTL_KEYWORD("pwr"), sep, one<'('>, sep, plain_expression, list_sep,
                       plain_expression, sep, one<')'>> {};
 
-// item := directive | block | map_entry | ',' | ';' | poly_term | pwr_term | keyword
-//         | expression
+// literal_run := (run_vector | run_number | ',')+ with at least kMinLiteralRun floats and
+// vectors (build_control checks the count): the lists of big meshes, read into one
+// ast::LiteralRun. An element is only taken where nothing could make it part of an
+// expression: a float or vector followed by ',', '}', ']', '<' or a directive, vector
+// components followed by ',' or '>'; anything else ends the run and is read as before.
+struct run_number_text : seq<opt<one<'-'>>, number_text> {};
+struct run_follow : at<sep, one<',', '}', ']', '<', '#'>> {};
+struct run_component : seq<run_number_text, at<sep, one<',', '>'>>> {};
+struct run_vector : seq<one<'<'>, sep, run_component, star<element_sep, run_component>,
+                        opt<list_sep>, sep, one<'>'>, run_follow> {};
+struct run_number : seq<run_number_text, run_follow> {};
+struct run_comma : one<','> {};
+struct literal_run : plus<sor<run_vector, run_number, run_comma>, sep> {};
+
+// item := directive | literal run | block | map_entry | ',' | ';' | poly_term | pwr_term
+//         | keyword | expression
 // A vector that no operator follows is an item by itself: tried first, it spares the lists of
 // big meshes the whole expression grammar.
 struct vector_item : seq<vector, not_at<one<'.', '['>>,
                          not_at<sep, one<'+', '-', '*', '/', '&', '|', '?', '=', '!', '>'>>> {};
-struct item : sor<directive, padded<vector_item>, padded<block>, padded<map_entry>, padded<comma_item>,
+struct item : sor<directive, literal_run, padded<vector_item>, padded<block>, padded<map_entry>, padded<comma_item>,
                   padded<semicolon_item>, padded<poly_term>, padded<pwr_term>,
                   padded<keyword_item>,
                   padded<plain_expression>> {};
