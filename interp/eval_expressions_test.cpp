@@ -18,6 +18,18 @@ TEST_F(ExpressionTest, FloatArithmeticAndPrecedence) {
     EXPECT_NEAR(number("1/3*3"), 1, 1e-15);
 }
 
+// The parser folds long literal sums (BuildState::kFoldedChain); an identifier at the head
+// stops it. Both give the interpreter's left-to-right result, bit for bit.
+TEST_F(ExpressionTest, FoldedLiteralChainsEvaluateAsWritten) {
+    std::string terms;
+    for (int i = 1; i <= 40; ++i) terms += " + " + std::to_string(i) + " * 0.1 - 0.3 / 7";
+    run("#declare Z = 0;\n#declare A = 0" + terms + ";\n#declare B = Z" + terms + ";\n");
+    EXPECT_EQ(num_var("A"), num_var("B"));
+    double expect = 0;
+    for (int i = 1; i <= 40; ++i) expect = expect + i * 0.1 - 0.3 / 7;
+    EXPECT_EQ(num_var("A"), expect);
+}
+
 TEST_F(ExpressionTest, ComparisonsUseEpsilon) {
     EXPECT_DOUBLE_EQ(number("3 = 3"), 1);
     EXPECT_DOUBLE_EQ(number("3 != 3"), 0);

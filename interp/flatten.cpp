@@ -103,7 +103,7 @@ Flow Evaluator::run_item(const ast::Node& node, std::vector<Item>& out) {
             Item it;
             it.kind = Item::Kind::Literals;
             it.loc = node.loc;
-            it.literals = &node.more().literals;
+            it.literals = node.more().literals.get();
             out.push_back(std::move(it));
             return Flow::Normal;
         }

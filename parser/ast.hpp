@@ -117,7 +117,7 @@ struct NodeExtra {
     std::vector<bool> optional_params; // Macro
     uint32_t raw_begin = 0, raw_end = 0;  // Macro body byte range
     SourceLoc raw_loc;                     // Macro body start
-    LiteralRun literals;                   // Literals
+    std::shared_ptr<LiteralRun> literals;  // Literals (immutable once parsed)
 };
 
 struct Node {

@@ -28,7 +28,9 @@ void BuildState::open(Kind kind, const InputIterator& at) {
 
 void BuildState::open_literals(const InputIterator& at) {
     open(Kind::Literals, at);
-    run_ = &frames_.back().node->more().literals;
+    ast::NodeExtra& extra = frames_.back().node->more();
+    extra.literals = std::make_shared<ast::LiteralRun>();
+    run_ = extra.literals.get();
 }
 
 void BuildState::close_literals(bool ok, const char* end) {
@@ -61,6 +63,68 @@ bool BuildState::literal_element(const InputIterator& at, std::size_t mark) {
         run_->lines.push_back({uint32_t(at.byte - (at.column - 1)), uint32_t(at.line)});
     if (size > 0) ++run_->value_elements;
     return true;
+}
+
+namespace {
+
+// The value of a literal arithmetic expression as the interpreter computes it, if it is one
+// and every step is finite (else the interpreter's warnings must still be given).
+bool fold_step(const std::string& op, double a, double b, double& r) {
+    if (op == "+") r = a + b;
+    else if (op == "-") r = a - b;
+    else if (op == "*") r = a * b;
+    else if (op == "/" && b != 0) r = a / b;
+    else return false;
+    return std::isfinite(r);
+}
+
+bool literal_number(const Node& n, double& v) {
+    switch (n.kind) {
+        case Kind::Number: v = n.number; return std::isfinite(v);
+        case Kind::Unary:
+            if (n.text != "-" && n.text != "+") return false;
+            if (!literal_number(*n.children.at(0), v)) return false;
+            if (n.text == "-") v = -v;
+            return true;
+        case Kind::Binary: {
+            if (!literal_number(*n.children.at(0), v)) return false;
+            const std::vector<std::string>& ops = n.more().ops;
+            for (std::size_t i = 0; i < ops.size(); ++i) {
+                double b;
+                if (!literal_number(*n.children.at(i + 1), b) || !fold_step(ops[i], v, b, v))
+                    return false;
+            }
+            return true;
+        }
+        default: return false;
+    }
+}
+
+}  // namespace
+
+void BuildState::chain_operator_added() {
+    if (chains_.empty()) return;
+    Chain& c = chains_.back();
+    auto& kids = *top_;  // from c.mark: operand, operator, operand, ..., operand, operator
+    if (!c.foldable || (!c.folding && kids.size() - c.mark < 2 * kFoldedChain)) return;
+    c.folding = true;
+    double acc;
+    if (!literal_number(*kids[c.mark], acc)) {
+        c.foldable = false;
+        return;
+    }
+    std::size_t j = c.mark + 1;  // the operator before the next operand to fold
+    for (double v, r; j + 2 < kids.size(); j += 2, acc = r) {
+        if (!literal_number(*kids[j + 1], v) || !fold_step(kids[j]->text, acc, v, r)) {
+            c.foldable = false;
+            break;
+        }
+    }
+    if (j == c.mark + 1 && kids[c.mark]->kind == Kind::Number) return;
+    auto head = std::make_unique<Node>(Kind::Number, kids[c.mark]->loc);
+    head->number = acc;
+    kids[c.mark] = std::move(head);
+    kids.erase(kids.begin() + std::ptrdiff_t(c.mark + 1), kids.begin() + std::ptrdiff_t(j));
 }
 
 void BuildState::close(Finisher finish, const char* end) {

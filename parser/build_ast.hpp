@@ -72,12 +72,29 @@ public:
     bool literal_element(const InputIterator& at, std::size_t mark);
     bool literal_run_long_enough() const { return run_->value_elements >= ast::kMinLiteralRun; }
 
+    // Long sums and products of literals (grammar.hpp's sum and product chains) are folded
+    // while they are read, so that a #declare of millions of terms does not keep a node per
+    // number. Operands are folded into the chain's head, left to right as the interpreter
+    // evaluates them, once a chain has kFoldedChain operands and while the head and every
+    // operand are literal arithmetic (+ - * and / by non-zero) with finite results; the first
+    // other operand ends the folding of that chain. Shorter chains keep their nodes.
+    static constexpr std::size_t kFoldedChain = 16;
+    void begin_chain(std::size_t mark) { chains_.push_back({mark, false, true}); }
+    void end_chain() { chains_.pop_back(); }
+    void chain_operator_added();  // after each operator of the innermost chain
+
 private:
     const SourceFile* file_;
     std::vector<Frame> frames_;
     std::vector<ast::NodePtr>* top_;  // the innermost frame's children (its node is on the heap)
     int depth_ = 0;
     ast::LiteralRun* run_ = nullptr;  // the open Literals frame's run
+    struct Chain {
+        std::size_t mark;  // where its operands start in the innermost frame's children
+        bool folding;      // long enough, and folded so far
+        bool foldable;     // no operand has stopped the folding
+    };
+    std::vector<Chain> chains_;
 };
 
 // ---- finishers (build_ast.cpp) ------------------------------------------------------------
@@ -127,6 +144,15 @@ LUMEN_LITERAL(run_number, LiteralRole::Number);
 LUMEN_LITERAL(run_comma, LiteralRole::Comma);
 LUMEN_LITERAL(run_component, LiteralRole::Component);
 #undef LUMEN_LITERAL
+
+// The chains whose literal operands are folded (BuildState::chain_operator_added), and their
+// operators.
+template <typename Rule> inline constexpr bool folds_literals = false;
+template <> inline constexpr bool folds_literals<rules::sum> = true;
+template <> inline constexpr bool folds_literals<rules::product> = true;
+template <typename Rule> inline constexpr bool chain_operator = false;
+template <> inline constexpr bool chain_operator<rules::add_op> = true;
+template <> inline constexpr bool chain_operator<rules::mul_op> = true;
 
 // Default: a rule builds nothing and does not nest.
 template <typename Rule>

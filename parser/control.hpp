@@ -27,7 +27,9 @@ struct build_control : tao::pegtl::normal<Rule> {
             if constexpr (traits::folds) {
                 const InputIterator at = in.iterator();
                 const std::size_t mark = st.mark();
+                if constexpr (folds_literals<Rule>) st.begin_chain(mark);
                 ok = base::template match<A, M, Action, Control>(in, st);
+                if constexpr (folds_literals<Rule>) st.end_chain();
                 if (!ok) st.truncate(mark);
                 else if (st.mark() > mark + 1) st.wrap(traits::kind, at, mark, traits::finisher, in.current());
             } else if constexpr (traits::builds) {
@@ -35,6 +37,8 @@ struct build_control : tao::pegtl::normal<Rule> {
                 ok = base::template match<A, M, Action, Control>(in, st);
                 if (ok) st.close(traits::finisher, in.current());
                 else st.discard();
+                if constexpr (chain_operator<Rule>)
+                    if (ok) st.chain_operator_added();
             } else {
                 const std::size_t mark = st.mark();
                 ok = base::template match<A, M, Action, Control>(in, st);

@@ -23,7 +23,7 @@ void write(std::ostringstream& out, const ast::Node& n) {
     }
     if (n.kind == K::ArrayDecl && n.flag) out << " init";
     if (n.kind == K::Literals) {  // ", " for a comma, "1" for a float, "<1 2 3>" for a vector
-        const ast::LiteralRun& run = n.more().literals;
+        const ast::LiteralRun& run = *n.more().literals;
         for (std::size_t i = 0, at = 0; i < run.sizes.size(); at += run.sizes[i++]) {
             out << ' ';
             if (run.sizes[i] == 0) out << ',';

@@ -94,11 +94,17 @@ TEST(Nesting, HundredThousandUnaryMinusesAreAnError) {
 }
 
 TEST(Nesting, HundredThousandTermSumIsOneFlatNode) {
-    SourceFile f{"sum", "1" + repeat("+1", 100000)};
+    SourceFile f{"sum", "x" + repeat("+x", 100000)};
     ast::NodePtr n = parse_expression(f);
     ASSERT_EQ(n->kind, ast::Kind::Binary);
     EXPECT_EQ(n->children.size(), 100001u);
     EXPECT_EQ(n->more().ops.size(), 100000u);
+    // Literals fold as they are read: the head and the last operand are left.
+    SourceFile g{"sum", "1" + repeat("+1", 100000)};
+    ast::NodePtr folded = parse_expression(g);
+    ASSERT_EQ(folded->kind, ast::Kind::Binary);
+    ASSERT_EQ(folded->children.size(), 2u);
+    EXPECT_EQ(folded->children[0]->number, 100000);
 }
 
 TEST(Nesting, OtherDeepConstructs) {

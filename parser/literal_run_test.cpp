@@ -7,6 +7,7 @@
 namespace lumen::parser {
 namespace {
 
+using testing::expr;
 using testing::items;
 
 TEST(LiteralRun, LongListsOfFloatsAndVectorsBecomeOneNode) {
@@ -57,7 +58,7 @@ TEST(LiteralRun, ElementsKeepTheirOwnLocations) {
     const testing::Parsed p = testing::parse_text("b {\n 1, 2,\t3, 4,\n  5, 6, 7, <8, 9>\n}");
     const ast::Node& run = *p.root->children.at(0)->children.at(0);
     ASSERT_EQ(run.kind, ast::Kind::Literals);
-    const ast::LiteralRun& r = run.more().literals;
+    const ast::LiteralRun& r = *run.more().literals;
     auto at = [&](size_t i) {
         const SourceLoc l = r.loc(p.file.get(), i);
         return std::to_string(l.line) + ":" + std::to_string(l.column);
@@ -67,6 +68,27 @@ TEST(LiteralRun, ElementsKeepTheirOwnLocations) {
     EXPECT_EQ(at(8), "3:3");   // 5
     EXPECT_EQ(at(14), "3:12");  // <8, 9>
     EXPECT_EQ(r.value_elements, 8u);
+}
+
+// Long sums and products of literals fold while they are read (BuildState::kFoldedChain).
+TEST(LiteralChain, LongLiteralSumsFoldShortOnesDoNot) {
+    std::string terms = "1";
+    for (int i = 2; i <= 20; ++i) terms += " + " + std::to_string(i) + " * 0.5";
+    // 1 + 0.5 * (2 + ... + 19) folded into the head; the last operand is read after the last
+    // operator, so it stays.
+    EXPECT_EQ(items("#declare S = " + terms + ";"),
+              "(Declare declare (Ident S) (Binary (Number 95.5) + (Binary (Number 20) * (Number 0.5))))");
+    EXPECT_EQ(expr("1 + 2 * 3"), "(Binary (Number 1) + (Binary (Number 2) * (Number 3)))");
+    // An identifier stops the folding where it stands; what follows keeps its nodes.
+    std::string mixed = "1";
+    for (int i = 2; i <= 18; ++i) mixed += " + " + std::to_string(i);
+    EXPECT_EQ(items("#declare S = " + mixed + " + x + 19 + 20;"),
+              "(Declare declare (Ident S) (Binary (Number 171) + (Ident x) + (Number 19) + (Number 20)))");
+    // Division by zero and overflow are left to the interpreter, which warns about them.
+    std::string zero = "1 / 0";
+    for (int i = 2; i <= 20; ++i) zero += " + " + std::to_string(i);
+    EXPECT_NE(items("#declare S = " + zero + ";").find("(Binary (Number 1) / (Number 0))"),
+              std::string::npos);
 }
 
 }  // namespace
