@@ -22,29 +22,42 @@ SourceLoc BuildState::loc(const InputIterator& it) const {
 }
 
 void BuildState::open(Kind kind, const InputIterator& at) {
-    frames_.push_back({std::make_unique<Node>(kind, loc(at)), at.data});
+    NodePtr node;
+    if (spare_nodes_.empty()) {
+        node = std::make_unique<Node>(kind, loc(at));
+    } else {
+        node = std::move(spare_nodes_.back());
+        spare_nodes_.pop_back();
+        node->kind = kind;
+        node->flag = false;
+        node->loc = loc(at);
+        node->number = 0.0;
+    }
+    frames_.push_back({std::move(node), at.data});
     top_ = &frames_.back().node->children;
 }
 
-void BuildState::open_literals(const InputIterator& at) {
-    open(Kind::Literals, at);
-    ast::NodeExtra& extra = frames_.back().node->more();
-    extra.literals = std::make_shared<ast::LiteralRun>();
-    run_ = extra.literals.get();
+void BuildState::open_literals() {
+    if (!spare_run_) spare_run_ = std::make_shared<ast::LiteralRun>();
+    run_ = spare_run_.get();
 }
 
-void BuildState::close_literals(bool ok, const char* end) {
-    if (ok) {
-        // Exact sizes: the run stays as long as the tree.
-        run_->values.shrink_to_fit();
-        run_->bytes.shrink_to_fit();
-        run_->sizes.shrink_to_fit();
-        run_->lines.shrink_to_fit();
-        close(finish::keep, end);
-    } else {
-        discard();
-    }
+void BuildState::close_literals(bool ok, const InputIterator& at) {
+    ast::LiteralRun& run = *run_;
     run_ = nullptr;
+    if (!ok) {  // cleared for the next try, keeping its capacity
+        run.values.clear(), run.bytes.clear(), run.sizes.clear(), run.lines.clear();
+        run.value_elements = 0;
+        return;
+    }
+    // Exact sizes: the run stays as long as the tree.
+    run.values.shrink_to_fit();
+    run.bytes.shrink_to_fit();
+    run.sizes.shrink_to_fit();
+    run.lines.shrink_to_fit();
+    auto node = std::make_unique<Node>(Kind::Literals, loc(at));
+    node->more().literals = std::move(spare_run_);
+    top_->push_back(std::move(node));
 }
 
 bool BuildState::literal_value(const char* begin, const char* end) {

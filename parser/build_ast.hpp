@@ -35,9 +35,16 @@ public:
 
     void open(ast::Kind kind, const InputIterator& at);
     void close(Finisher finish, const char* end);
+    // Drops the innermost frame; its node is kept for the next open (every item tries several
+    // rules, so most opened nodes are dropped).
     void discard() {
+        ast::NodePtr node = std::move(frames_.back().node);
         frames_.pop_back();
         top_ = &frames_.back().node->children;
+        node->children.clear();
+        node->extra.reset();
+        node->text.clear();
+        spare_nodes_.push_back(std::move(node));
     }
     // Every rule that may fail marks and truncates: kept to one load through top_.
     std::size_t mark() const { return top_->size(); }
@@ -60,9 +67,10 @@ public:
     // The single node built under the root frame.
     ast::NodePtr take_result();
 
-    // Literal runs (grammar.hpp's literal_run): one Literals frame, filled in place.
-    void open_literals(const InputIterator& at);
-    void close_literals(bool ok, const char* end);  // appends the node if ok, else drops it
+    // Literal runs (grammar.hpp's literal_run), filled in place: a node is made only for a
+    // run that succeeds (every item is tried as one first).
+    void open_literals();
+    void close_literals(bool ok, const InputIterator& at);  // appends the node if ok
     std::size_t literal_mark() const { return run_->values.size(); }
     void literal_truncate(std::size_t mark) { run_->values.resize(mark); }
     // Appends the float written in [begin, end); false (nothing appended) if it is not finite.
@@ -88,7 +96,9 @@ private:
     std::vector<Frame> frames_;
     std::vector<ast::NodePtr>* top_;  // the innermost frame's children (its node is on the heap)
     int depth_ = 0;
-    ast::LiteralRun* run_ = nullptr;  // the open Literals frame's run
+    ast::LiteralRun* run_ = nullptr;  // the open run (spare_run_), else null
+    std::shared_ptr<ast::LiteralRun> spare_run_;
+    std::vector<ast::NodePtr> spare_nodes_;  // dropped nodes, emptied
     struct Chain {
         std::size_t mark;  // where its operands start in the innermost frame's children
         bool folding;      // long enough, and folded so far

@@ -61,10 +61,10 @@ struct build_control : tao::pegtl::normal<Rule> {
         constexpr auto next = decltype(m)::next_rewind_mode;
         const InputIterator at = in.iterator();
         if constexpr (role == LiteralRole::Run) {
-            st.open_literals(at);
+            st.open_literals();
             const bool ok = base::template match<A, next, Action, Control>(in, st) &&
                             st.literal_run_long_enough();
-            st.close_literals(ok, in.current());
+            st.close_literals(ok, at);
             return m(ok);
         } else {
             const std::size_t mark = st.literal_mark();

@@ -205,20 +205,25 @@ struct array_init : seq<one<'{'>, sep, opt<array_element, star<element_sep, arra
 // primary := number | string | vector | paren | array_decl | colour | call | ident | #if
 //   (an #if inside an expression chooses the value: `(#if (M) A #else B #end)`, math.inc)
 struct if_directive;
-struct primary : sor<number, string_literal, vector, paren, array_decl, colour_expr, call, ident,
-                     if_directive> {};
+// Rules that build a node are guarded by a lookahead where that is cheap: a lookahead builds
+// nothing, and most items and operands are tried against several rules before one matches.
+struct primary : sor<seq<at<sor<digit, one<'.'>>>, number>, seq<at<one<'"'>>, string_literal>,
+                     seq<at<one<'<'>>, vector>, paren, seq<at<TAO_PEGTL_KEYWORD("array")>, array_decl>,
+                     seq<at<sor<colour_keyword, rgb_word>>, colour_expr>,
+                     seq<at<call_name, sep, one<'('>>, call>, ident,
+                     seq<at<one<'#'>>, if_directive>> {};
 
 // postfix := primary {'.' word | '[' expression ']'}
 struct member_suffix : seq<one<'.'>, word> {};
 struct index_suffix : seq<one<'['>, sep, must<expression>, sep, must<close_bracket>> {};
 // (no whitespace before a suffix, so `[0 Red] [1 Blue]` map entries never read as indexing)
-struct postfix : seq<primary, star<sor<member_suffix, index_suffix>>> {};
+struct postfix : seq<primary, star<sor<member_suffix, seq<at<one<'['>>, index_suffix>>>> {};
 
 // unary := ('-' | '+' | '!') unary | postfix
 struct unary_op : one<'-', '+', '!'> {};
 struct unary;
 struct prefixed : seq<unary_op, sep, must<unary>> {};
-struct unary : sor<prefixed, postfix> {};
+struct unary : sor<seq<at<unary_op>, prefixed>, postfix> {};
 
 // Binary levels: operand {op operand}, one flat node per chain.
 struct mul_op : one<'*', '/'> {};
@@ -228,7 +233,7 @@ struct and_op : one<'&'> {};
 struct or_op : one<'|'> {};
 
 template <typename Operand, typename Op>
-struct chain : seq<Operand, star<sep, Op, sep, must<Operand>>> {};
+struct chain : seq<Operand, star<sep, at<Op>, Op, sep, must<Operand>>> {};
 
 struct product : chain<unary, mul_op> {};
 struct sum : chain<product, add_op> {};
@@ -313,9 +318,14 @@ struct literal_run : plus<sor<run_vector, run_number, run_comma>, sep> {};
 // big meshes the whole expression grammar.
 struct vector_item : seq<vector, not_at<one<'.', '['>>,
                          not_at<sep, one<'+', '-', '*', '/', '&', '|', '?', '=', '!', '>'>>> {};
-struct item : sor<directive, literal_run, padded<vector_item>, padded<block>, padded<map_entry>, padded<comma_item>,
-                  padded<semicolon_item>, padded<poly_term>, padded<pwr_term>,
-                  padded<keyword_item>,
+struct block_start : seq<word, sep, one<'{', '('>> {};
+struct item : sor<seq<at<one<'#'>>, directive>, literal_run, seq<at<one<'<'>>, padded<vector_item>>,
+                  seq<at<sor<block_start, TAO_PEGTL_KEYWORD("function")>>, padded<block>>,
+                  seq<at<one<'['>>, padded<map_entry>>, seq<at<one<','>>, padded<comma_item>>,
+                  seq<at<one<';'>>, padded<semicolon_item>>,
+                  seq<at<TAO_PEGTL_KEYWORD("xyz")>, padded<poly_term>>,
+                  seq<at<TAO_PEGTL_KEYWORD("pwr")>, padded<pwr_term>>,
+                  seq<at<keyword_item>, padded<keyword_item>>,
                   padded<plain_expression>> {};
 
 // ---- directives -----------------------------------------------------------------------------
