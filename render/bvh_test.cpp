@@ -156,5 +156,41 @@ TEST(Bvh, HundredThousandTriangleMeshIsFast) {
     std::printf("100k-triangle mesh: build %.3f s, %d rays %.3f s\n", build, rays, trace_s);
 }
 
+TEST(Bvh, MeshShadowRaysAgreeWithNearestHits) {
+    // Two wavy layers of triangles, 0.5 apart: a shadow ray (occluded(), which takes the
+    // first triangle it meets) is blocked exactly when a nearest-hit search finds one within
+    // its length, whether it ends above both layers, between them or below.
+    const int n = 40;
+    scene::Mesh m;
+    for (int layer = 0; layer < 2; ++layer)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                double x = double(i) / n * 4 - 2, z = double(j) / n * 4 - 2;
+                m.vertices.push_back({x, 0.2 * std::sin(3 * x + z) - 0.5 * layer, z});
+            }
+    const int per_layer = (n + 1) * (n + 1);
+    for (int layer = 0; layer < 2; ++layer)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                int a = layer * per_layer + j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+                m.faces.push_back({{a, b, d}});
+                m.faces.push_back({{a, d, c}});
+            }
+    Geometry g(scene_of({make(m)}));
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(-1.5, 1.5), len(0.1, 4);
+    int blocked = 0;
+    for (int r = 0; r < 20000; ++r) {
+        const Ray rr = ray({u(rng), 1, u(rng)}, {u(rng) * 0.2, -1, u(rng) * 0.2});
+        const double tmax = len(rng);
+        Hit h;
+        const bool nearest = g.intersect(rr, 1e-4, tmax, h);
+        ASSERT_EQ(g.occluded(rr, 1e-4, tmax, Query::Shadow), nearest) << r;
+        blocked += nearest;
+    }
+    EXPECT_GT(blocked, 5000);
+    EXPECT_LT(blocked, 19000);
+}
+
 }  // namespace
 }  // namespace lumen::render

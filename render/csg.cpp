@@ -43,15 +43,21 @@ bool csg_accepts(const NodeStore& store, const Node& n, uint32_t which, const gl
 }
 
 // Nearest hit of a Shape node, ignoring its clipped_by and bounded_by.
+// `any`: some hit will do (only its distance is set), which a mesh finds sooner.
 inline bool intersect_primitive(const NodeStore& store, const Node& n, uint32_t index,
                                 const Ray& ray, double tmin, double tmax, bool shadow,
-                                NodeHit& hit) {
+                                NodeHit& hit, bool any = false) {
     if (shadow && n.no_shadow) return false;
     LocalRay local{ray.origin, ray.dir};
     if (!n.identity) {
         const scene::Transform& xf = store.transforms[n.xf];
         local = {xf.inv_point(ray.origin), xf.inv_vector(ray.dir)};
     }
+    if (any)
+        if (const auto* mesh = std::get_if<MeshPtr>(&store.shapes[n.shape])) {
+            hit.leaf = index;
+            return any_hit(**mesh, local, std::max(tmin, n.min_depth), tmax, hit.shape.t);
+        }
     if (!shape_intersect(store.shapes[n.shape], local, std::max(tmin, n.min_depth), tmax,
                          hit.shape))
         return false;
@@ -101,7 +107,7 @@ bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, doub
     const Node& n = store.nodes[index];
     // The common case (a plain primitive) without the retry loop.
     if (n.kind == NodeKind::Shape && n.clip_count == 0 && n.bound_count == 0)
-        return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit);
+        return intersect_primitive(store, n, index, ray, tmin, tmax, shadow, hit, any);
     if (n.bound_count && !ray_meets_bounds(store, n, ray)) return false;
     // Clipped: the retries from a clipped-away hit need the nearest one.
     any = any && n.clip_count == 0;

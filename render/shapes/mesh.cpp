@@ -115,6 +115,19 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
     return true;
 }
 
+bool any_hit(const MeshShape& s, const LocalRay& r, double tmin, double tmax, double& t) {
+    if (!s.valid) return false;
+    bool found = false;
+    for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
+        double u, v;
+        if (!found && hit_triangle(s.tris[i], r, tmin, tmax, t, u, v)) {
+            found = true;
+            tmax = -Aabb::inf;  // the traversal meets no further box
+        }
+    });
+    return found;
+}
+
 bool inside(const MeshShape& s, const glm::dvec3& p) {
     if (!s.valid || !s.mesh->inside_vector || !s.box.contains(p)) return false;
     LocalRay r{p, *s.mesh->inside_vector};

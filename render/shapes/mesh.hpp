@@ -20,6 +20,9 @@ struct MeshShape {
 // `accelerate` = false skips the BVH (a one-off inside test); queries then scan every face.
 std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate = true);
 bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
+// Some triangle (not necessarily the nearest) at tmin < t < tmax, its t in `t`: a shadow
+// ray's test, which may stop at the first one.
+bool any_hit(const MeshShape& s, const LocalRay& r, double tmin, double tmax, double& t);
 bool inside(const MeshShape& s, const glm::dvec3& p);
 Aabb bounds(const MeshShape& s);
 
