@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "render/bvh.hpp"
+#include "render/wide_bvh.hpp"
 #include "render/geometry_test_util.hpp"
 
 namespace lumen::render {
@@ -38,6 +39,44 @@ TEST(Bvh, VisitsEveryBoxTheRayMeets) {
             visited += seen[i];
         }
         EXPECT_LT(visited, boxes.size() / 4);  // culling works
+    }
+}
+
+TEST(Bvh, WideFormVisitsTheLeavesTheBinaryOneVisits) {
+    // Without pruning (tmax stays), both visit every leaf whose boxes the ray meets: the same
+    // set, as the four-wide slab test is the binary one lane by lane. With a nearest-hit
+    // search both find the same nearest box entry.
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-10, 10), s(0.01, 1);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 3000; ++i) {
+        glm::dvec3 c{u(rng), u(rng), u(rng)};
+        boxes.push_back({c - s(rng), c + s(rng)});
+    }
+    Bvh bvh;
+    bvh.build(boxes, 4);
+    const WideBvh wide(bvh);
+    EXPECT_LT(wide.node_count(), bvh.nodes().size() / 2);
+    for (int r = 0; r < 500; ++r) {
+        glm::dvec3 o{u(rng), u(rng), u(rng)}, d = glm::normalize(glm::dvec3{u(rng), u(rng), u(rng)});
+        if (r % 10 == 0) d = {0, 0, 1};  // zero components
+        if (r % 10 == 1) d = {0, -1, 0};
+        const SlabRay slab(o, d);
+        std::vector<char> binary(boxes.size(), 0), wide_seen(boxes.size(), 0);
+        double tmax = 1e30;
+        bvh.traverse(slab, 0, tmax, [&](uint32_t i) { binary[i] = 1; });
+        wide.traverse(slab, 0, tmax, [&](uint32_t i) { wide_seen[i] += 1; });
+        ASSERT_EQ(binary, wide_seen) << r;  // and none twice
+        double nearest_binary = 1e30, nearest_wide = 1e30;
+        auto nearest = [&](double& best) {
+            return [&](uint32_t i) {
+                double enter, exit;
+                if (slab.hits(boxes[bvh.order()[i]], 0, best, enter, exit)) best = enter;
+            };
+        };
+        bvh.traverse(slab, 0, nearest_binary, nearest(nearest_binary));
+        wide.traverse(slab, 0, nearest_wide, nearest(nearest_wide));
+        ASSERT_EQ(nearest_binary, nearest_wide) << r;
     }
 }
 

@@ -67,10 +67,12 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
     }
     out->valid = !tris.empty();
     if (accelerate && !tris.empty()) {
-        out->bvh.build(boxes, 4);
+        Bvh binary;
+        binary.build(boxes, 4);
+        out->bvh = WideBvh(binary);
         out->tris.reserve(tris.size());
         out->face.reserve(tris.size());
-        for (uint32_t i : out->bvh.order()) {
+        for (uint32_t i : binary.order()) {
             out->tris.push_back(tris[i]);
             out->face.push_back(faces[i]);
         }

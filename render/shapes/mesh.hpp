@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "render/bvh.hpp"
+#include "render/wide_bvh.hpp"
 #include "render/shapes/triangle.hpp"
 
 namespace lumen::render {
@@ -13,7 +14,7 @@ struct MeshShape {
     const scene::Mesh* mesh = nullptr;
     std::vector<TriangleCore> tris;    // in BVH order
     std::vector<uint32_t> face;        // source face of each entry of tris
-    Bvh bvh;                           // empty when built without acceleration
+    WideBvh bvh;                       // empty when built without acceleration
     Aabb box;
     bool valid = true;
 };
