@@ -6,6 +6,7 @@
 // local's stale references before the local is set.
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "function/register_code.hpp"
 #include "function/vm.hpp"
@@ -13,6 +14,13 @@
 namespace lumen::fn {
 
 namespace {
+
+// The operations that pop two operands and push one result, and their register forms.
+constexpr std::pair<Op, ROp> kBinary[] = {
+    {Op::Add, ROp::Add}, {Op::Sub, ROp::Sub}, {Op::Mul, ROp::Mul}, {Op::Div, ROp::Div},
+    {Op::Lt, ROp::Lt},   {Op::Le, ROp::Le},   {Op::Eq, ROp::Eq},   {Op::Ne, ROp::Ne},
+    {Op::Ge, ROp::Ge},   {Op::Gt, ROp::Gt},   {Op::And, ROp::And}, {Op::Or, ROp::Or},
+    {Op::Min, ROp::Min}, {Op::Max, ROp::Max}, {Op::Math2, ROp::Math2}};
 
 class Lowering {
 public:
@@ -103,6 +111,10 @@ private:
         emit(in);
         push(in.d);
     }
+    void unary(ROp op, uint32_t a = 0) {
+        const uint16_t s = pop();
+        result({op, 0, slot(stack_.size()), s, 0, a});
+    }
     void binary(ROp op, uint32_t a = 0) {
         const uint16_t t = pop(), s = pop();
         result({op, 0, slot(stack_.size()), s, t, a});
@@ -116,6 +128,11 @@ private:
 
     // Lowers one instruction; false when what follows is unreachable.
     bool step(const Instr& in) {
+        for (const auto& [op, rop] : kBinary)
+            if (in.op == op) {
+                binary(rop, in.a);
+                return true;
+            }
         switch (in.op) {
             case Op::Const:
                 push(constant(in.a));  // a loaded one lies in the slot it is pushed to
@@ -130,15 +147,7 @@ private:
                 emit({ROp::Move, 0, local, value});
                 break;
             }
-            case Op::Add: binary(ROp::Add); break;
-            case Op::Sub: binary(ROp::Sub); break;
-            case Op::Mul: binary(ROp::Mul); break;
-            case Op::Div: binary(ROp::Div); break;
-            case Op::Neg: {
-                const uint16_t s = pop();
-                result({ROp::Neg, 0, slot(stack_.size()), s});
-                break;
-            }
+            case Op::Neg: unary(ROp::Neg); break;
             case Op::AddConst: case Op::SubConst: case Op::MulConst: {
                 const uint16_t t = constant(in.a);  // (a loaded one lies above the top)
                 const uint16_t s = pop();
@@ -147,22 +156,7 @@ private:
                 result({op, 0, slot(stack_.size()), s, t});
                 break;
             }
-            case Op::Lt: binary(ROp::Lt); break;
-            case Op::Le: binary(ROp::Le); break;
-            case Op::Eq: binary(ROp::Eq); break;
-            case Op::Ne: binary(ROp::Ne); break;
-            case Op::Ge: binary(ROp::Ge); break;
-            case Op::Gt: binary(ROp::Gt); break;
-            case Op::And: binary(ROp::And); break;
-            case Op::Or: binary(ROp::Or); break;
-            case Op::Math1: {
-                const uint16_t s = pop();
-                result({ROp::Math1, 0, slot(stack_.size()), s, 0, in.a});
-                break;
-            }
-            case Op::Math2: binary(ROp::Math2, in.a); break;
-            case Op::Min: binary(ROp::Min); break;
-            case Op::Max: binary(ROp::Max); break;
+            case Op::Math1: unary(ROp::Math1, in.a); break;
             case Op::Jump: jump(ROp::Jump, 0, 0, in.a); return false;
             case Op::JumpIfNotNeg: {
                 const uint16_t s = pop();
@@ -183,6 +177,7 @@ private:
             case Op::Call: call(ROp::Call, in, in.b); break;
             case Op::External: call(ROp::External, in, 3); break;
             case Op::Transform: call(ROp::Transform, in, 3); break;
+            default: break;  // the binary operations (kBinary), lowered above
             case Op::Spline: {
                 const uint16_t s = pop();
                 result({ROp::Spline, in.c, slot(stack_.size()), s, 0, in.a});

@@ -15,16 +15,28 @@ namespace {
 
 using namespace testing;
 
-TEST(Bvh, VisitsEveryBoxTheRayMeets) {
-    std::mt19937 rng(1);
+// `count` boxes of sizes 0.02 to 2 scattered over [-10, 10]^3.
+std::vector<Aabb> random_boxes(std::mt19937& rng, int count) {
     std::uniform_real_distribution<double> u(-10, 10), s(0.01, 1);
     std::vector<Aabb> boxes;
-    for (int i = 0; i < 2000; ++i) {
+    for (int i = 0; i < count; ++i) {
         glm::dvec3 c{u(rng), u(rng), u(rng)};
         boxes.push_back({c - s(rng), c + s(rng)});
     }
+    return boxes;
+}
+
+Bvh built(const std::vector<Aabb>& boxes) {
     Bvh bvh;
     bvh.build(boxes, 4);
+    return bvh;
+}
+
+TEST(Bvh, VisitsEveryBoxTheRayMeets) {
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<double> u(-10, 10);
+    const std::vector<Aabb> boxes = random_boxes(rng, 2000);
+    const Bvh bvh = built(boxes);
     EXPECT_LT(bvh.depth(), 40);
     for (int r = 0; r < 300; ++r) {
         glm::dvec3 o{u(rng), u(rng), u(rng)}, d = glm::normalize(glm::dvec3{u(rng), u(rng), u(rng)});
@@ -47,14 +59,9 @@ TEST(Bvh, WideFormVisitsTheLeavesTheBinaryOneVisits) {
     // set, as the four-wide slab test is the binary one lane by lane. With a nearest-hit
     // search both find the same nearest box entry.
     std::mt19937 rng(3);
-    std::uniform_real_distribution<double> u(-10, 10), s(0.01, 1);
-    std::vector<Aabb> boxes;
-    for (int i = 0; i < 3000; ++i) {
-        glm::dvec3 c{u(rng), u(rng), u(rng)};
-        boxes.push_back({c - s(rng), c + s(rng)});
-    }
-    Bvh bvh;
-    bvh.build(boxes, 4);
+    std::uniform_real_distribution<double> u(-10, 10);
+    const std::vector<Aabb> boxes = random_boxes(rng, 3000);
+    const Bvh bvh = built(boxes);
     const WideBvh wide(bvh);
     EXPECT_LT(wide.node_count(), bvh.nodes().size() / 2);
     for (int r = 0; r < 500; ++r) {
