@@ -69,7 +69,8 @@ template <int N>
 double run_in(const RegisterCode& rc, const Program& p, const double* args,
               const Context& context, int component, int depth) {
     double r[N];
-    std::memcpy(r, p.consts.data(), sizeof(double) * size_t(rc.frame_consts));
+    if (rc.frame_consts > 0)  // (no constants: data() may be null, which memcpy may not take)
+        std::memcpy(r, p.consts.data(), sizeof(double) * size_t(rc.frame_consts));
     double* const a = r + rc.frame_consts;
     for (int i = 0; i < rc.args; ++i) a[i] = i < p.params ? args[i] : 0.0;
     for (const RInstr* in = rc.code.data();; ++in) {
