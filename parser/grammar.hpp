@@ -116,7 +116,35 @@ struct block_comment : delimited<'/', '*', skip_block_comment, unterminated_comm
 // line_comment := "//" any* (eol | eof)
 struct line_comment : seq<two<'/'>, until<eolf>> {};
 // sep := (space | line_comment | block_comment | ^Z)*
-struct sep : star<sor<ascii::space, line_comment, block_comment, one<'\x1a'>>> {};
+// Most of a file's bytes pass through here (include files are mostly comments and
+// indentation), so runs of white space are skipped in one loop, not a rule per byte.
+struct sep {
+    using rule_t = sep;
+    using subs_t = empty_list;
+    template <apply_mode A, rewind_mode M, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&&... st) {
+        for (;;) {
+            const char* p = in.current();
+            const char* q = p;
+            for (const char* e = in.end(); q < e; ++q) {
+                const char c = *q;
+                if (c != ' ' && c != '\n' && c != '\t' && c != '\r' && c != '\v' && c != '\f' &&
+                    c != '\x1a')
+                    break;
+            }
+            if (q != p) in.bump(std::size_t(q - p));
+            if (in.size(2) < 2 || in.peek_char(0) != '/') return true;
+            if (in.peek_char(1) == '/') {  // line_comment: to the end of the line, or of the file
+                const void* eol = std::memchr(in.current(), '\n', in.size());
+                in.bump(eol ? std::size_t(static_cast<const char*>(eol) - in.current()) + 1 : in.size());
+            } else if (in.peek_char(1) == '*')
+                (void)Control<block_comment>::template match<A, rewind_mode::dontcare, Action, Control>(in, st...);
+            else
+                return true;
+        }
+    }
+};
 
 template <typename R>
 struct padded : seq<R, sep> {};

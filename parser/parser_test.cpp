@@ -7,7 +7,7 @@
 #include "parser/test_util.hpp"
 
 // The custom rules tell analyze() what they consume: words and delimited tokens always
-// consume input; a raw macro body may be empty.
+// consume input; a raw macro body and white space may be empty.
 namespace tao::pegtl {
 template <typename Name, bool (*P)(std::string_view)>
 struct analyze_traits<Name, lumen::parser::rules::word_if<P>> : analyze_any_traits<> {};
@@ -15,6 +15,8 @@ template <typename Name, char C0, char C1, const char* (*S)(const char*, const c
 struct analyze_traits<Name, lumen::parser::rules::delimited<C0, C1, S, E>> : analyze_any_traits<> {};
 template <typename Name>
 struct analyze_traits<Name, lumen::parser::rules::macro_raw_body> : analyze_opt_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, lumen::parser::rules::sep> : analyze_opt_traits<> {};
 }  // namespace tao::pegtl
 
 namespace lumen::parser {
