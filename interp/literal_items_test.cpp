@@ -1,6 +1,10 @@
 // A block's literal runs (ast::LiteralRun) read through the evaluator: the same values,
 // locations and errors as the same text read one node per value.
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 #include "interp/build_test_support.hpp"
 
@@ -42,6 +46,27 @@ TEST_F(LiteralItems, ErrorsPointAtTheElement) {
                                   ": error: vertex index 12 out of range (there are 12)");
     // Read from nodes, the same error.
     EXPECT_NE(error_of(mesh(12, false, "12")).find("vertex index 12 out of range"), std::string::npos);
+}
+
+TEST_F(LiteralItems, RunsFromMacrosAndIncludesAreReadInPlace) {
+    // A macro body's run, and an include file's, splice into the block where they are used,
+    // as their items did.
+    const std::string verts = "<0,0,0>, <1,0,0>, <0,1,0>, <1,1,0>, <0,0,1>, <1,0,1>, <0,1,1>, <1,1,1>";
+    const std::string faces = " } face_indices { 2, <0,1,2>, <5,6,7> } }";
+    const std::string inline_mesh = dump_scene_json(run("\nmesh2 { vertex_vectors { 8, " + verts + faces));
+    EXPECT_NE(inline_mesh.find("[1, 1, 1]"), std::string::npos);
+    EXPECT_EQ(dump_scene_json(run("#macro Verts() " + verts + " #end\n"
+                                  "mesh2 { vertex_vectors { 8, Verts()" + faces)),
+              inline_mesh);
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("lumen_runs_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "verts.inc") << verts;
+    options.library_paths = {dir.string()};
+    const std::string included = dump_scene_json(
+        run("\nmesh2 { vertex_vectors { 8,\n#include \"verts.inc\"\n" + faces));
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(included, inline_mesh);
 }
 
 TEST_F(LiteralItems, CountedReadersSeeEveryElement) {
