@@ -87,6 +87,7 @@ Sample BlockRenderer::blurred_sample(double x, double y, ThreadState& state,
 Sample BlockRenderer::sample(double x, double y, ThreadState& state,
                              uint64_t& primary_rays) const {
     throw_if_stop_requested();  // SIGINT/SIGTERM: the render unwinds within a sample
+    state.reseed(x, y);
     if (focal_blur_) return blurred_sample(x, y, state, primary_rays);
     const int rays = camera_.rays_per_sample();
     if (rays == 1) {

@@ -21,12 +21,15 @@ struct Block {
     int left, top, right, bottom;
 };
 
-// Blocks of block_size pixels starting at the top-left of the render area.
+// Blocks of block_size pixels on a grid from the image's top-left corner, cut by the render
+// area: anti-aliasing compares a pixel with its neighbours inside its block, so a partial
+// render (a farm's tile, cut on this grid) gives each pixel the value the whole render does.
 std::vector<Block> make_blocks(int x0, int y0, int x1, int y1, int size) {
     std::vector<Block> blocks;
-    for (int top = y0; top <= y1; top += size)
-        for (int left = x0; left <= x1; left += size)
-            blocks.push_back({left, top, std::min(x1, left + size - 1), std::min(y1, top + size - 1)});
+    const auto next = [size](int v) { return (v / size + 1) * size; };
+    for (int top = y0; top <= y1; top = next(top))
+        for (int left = x0; left <= x1; left = next(left))
+            blocks.push_back({left, top, std::min(x1, next(left) - 1), std::min(y1, next(top) - 1)});
     return blocks;
 }
 
@@ -47,6 +50,10 @@ Area render_area(const RenderOptions& options) {
 }  // namespace
 
 bool covers_whole_image(const RenderOptions& options) { return render_area(options).whole(options); }
+
+int effective_block_size(const RenderOptions& options) {
+    return std::clamp(options.block_size, 4, std::max({4, options.width, options.height}));
+}
 
 Image render(const scene::Scene& scene, const RenderOptions& options, RenderStats* stats,
              const Progress& progress, const BlockDone& block_done) {
@@ -86,8 +93,7 @@ Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats
         image.pixels.assign(size_t(image.width) * image.height * 5, 0.0f);
     if (x1 < x0 || y1 < y0) return image;
 
-    const int block_size =
-        std::clamp(options.block_size, 4, std::max({4, options.width, options.height}));
+    const int block_size = effective_block_size(options);
     const std::vector<Block> blocks = make_blocks(x0, y0, x1, y1, block_size);
 
     unsigned threads = options.threads > 0 ? unsigned(options.threads)

@@ -55,6 +55,11 @@ using BlockDone = std::function<void(const Image&, int left, int top, int right,
 // False for a partial render (+SR +ER +SC +EC that leave out part of the image).
 bool covers_whole_image(const RenderOptions& options);
 
+// The side of the render's blocks (+BS, within [4, the image's larger side]). Blocks lie on a
+// grid of this size from the image's top-left corner: a partial render cut on that grid gives
+// the same pixels as the whole render.
+int effective_block_size(const RenderOptions& options);
+
 class RenderFrame;  // render/frame.hpp
 
 // Renders the frame's scene (its pre-passes, such as options.indirect, done on the same frame).

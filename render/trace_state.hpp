@@ -1,6 +1,7 @@
 // Per-thread mutable state of the tracer: counters, the random source for area-light jitter
 // and crand, and scratch space reused across rays (so tracing never allocates per ray).
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -21,6 +22,19 @@ struct ThreadState {
     std::vector<unsigned char> area_valid;
 
     double uniform() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng); }
+
+    // Restarts the random source from a camera sample's position, so that what a sample draws
+    // does not depend on which thread renders it, or on which pixels came before it (a partial
+    // render's pixels are the whole render's: lumen farm).
+    void reseed(double x, double y) {
+        uint64_t h = std::bit_cast<uint64_t>(x) * 0x9e3779b97f4a7c15ULL ^ std::bit_cast<uint64_t>(y);
+        h ^= h >> 31;  // splitmix64's finaliser
+        h *= 0xbf58476d1ce4e5b9ULL;
+        h ^= h >> 27;
+        h *= 0x94d049bb133111ebULL;
+        h ^= h >> 31;
+        rng.seed(uint32_t(1 + h % 2147483646u));  // minstd's seeds: 1 .. 2^31 - 2
+    }
 };
 
 }  // namespace lumen::render
