@@ -9,7 +9,7 @@ namespace lumen::cli {
 namespace {
 
 const std::vector<std::string> kLongOptions = {"--help", "--version", "--dump-scene", "--check",
-                                               "--threads"};
+                                               "--threads", "--radiosity-only"};
 
 // Rejects settings that make no sense together, once everything has been read.
 void validate(const Options& o) {
@@ -66,6 +66,8 @@ Options parse_command_line(const std::vector<std::string>& args, SourceManager& 
             o.dump_scene = true;
         } else if (name == "--check") {
             o.check = true;
+        } else if (name == "--radiosity-only") {
+            o.radiosity_only = true;
         } else if (name == "--threads") {
             std::string n;
             if (a.size() > name.size()) {
@@ -97,6 +99,11 @@ std::string usage_text() {
            "  --dump-scene     print the evaluated scene as JSON and do not render\n"
            "  --check          list the features lumen does not support yet (exit 1 if any)\n"
            "  --threads N      same as +WTN\n"
+           "  --radiosity-only solve each frame's radiosity and save it (+RF +RFO or\n"
+           "                   Radiosity_Store=DIR); render nothing\n"
+           "\n"
+           "  lumen farm ...   render in parts, locally or on a Slurm cluster (lumen farm --help)\n"
+           "  lumen merge ...  join partial renders into one image (lumen merge --help)\n"
            "\n"
            "switches [INI key]:\n" +
            switch_help() +
@@ -127,7 +134,8 @@ std::string usage_text() {
            "  Radiosity_Max_Span=F          split elements seen wider than F x the image (1/8)\n"
            "  Radiosity_Tolerance=T         iterative/progressive stop\n"
            "  Radiosity_File_Name=F (+RF), Radiosity_From_File (+RFI), Radiosity_To_File (+RFO)\n"
-           "                                load/save the patch solution\n";
+           "                                load/save the patch solution\n"
+           "  Radiosity_Store=DIR           solutions by scene: loaded when there, else saved\n";
 }
 
 }  // namespace lumen::cli

@@ -35,6 +35,7 @@ struct Options {
 
     // What to do instead of (or around) rendering.
     bool help = false, version = false, dump_scene = false, check = false;
+    bool radiosity_only = false;  // --radiosity-only: solve (and save) each frame's radiosity
     bool verbose = false;
 
     // Accepted for compatibility but with no effect (Display, Pause_When_Done, ...): noted so

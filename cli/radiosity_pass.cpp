@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <thread>
 
 #include "render/camera.hpp"
@@ -40,6 +41,56 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
     return prepare(*own_frame_, options, render, log);
 }
 
+bool RadiosityPass::solve(const render::RenderFrame& frame, const rad::RadiosityOptions& options,
+                          int threads, std::vector<std::string>& log) {
+    const scene::Scene& scene = frame.scene();
+    display_.reset();
+    receivers_.reset();
+    points_.reset();
+    if (!scene.globals.radiosity) return false;
+    options_ = options;
+    mesh_ = std::make_unique<rad::SceneMesh>(
+        rad::build_scene_mesh(frame.geometry(), options.patch_size, rad::ambient_emission(scene),
+                              &scene.camera.location));
+    for (const std::string& w : mesh_->warnings) log.push_back(w);
+
+    const uint64_t key = rad::solution_key(frame, *mesh_, options);
+    const size_t unknowns = mesh_->unknowns();
+    const int bounces = rad::effective_bounces(scene, options);
+    reused_ = false;
+    loaded_from_.clear();
+    const std::string stored = options.store.empty() ? std::string() : store_path(options.store, key);
+    if (options.from_file && !options.file.empty()) {
+        solution_ = rad::load_solution(options.file, key, unknowns);
+        loaded_from_ = options.file;
+    } else if (solution_ && solution_->scene_key == key && solution_->B.size() == unknowns &&
+               bounces_ == bounces) {
+        reused_ = true;  // only the camera changed: the solution is view-independent
+    } else if (!stored.empty() && std::filesystem::exists(stored)) {
+        solution_ = rad::load_solution(stored, key, unknowns);
+        loaded_from_ = stored;
+    } else {
+        info_ = {};
+        solution_ = rad::solve_scene(frame, *mesh_, options, threads, info_);
+        solution_->scene_key = key;
+        for (const std::string& w : info_.warnings) log.push_back(w);
+        if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
+        if (!stored.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(options.store, ec);
+            rad::save_solution(*solution_, stored);
+        }
+    }
+    bounces_ = bounces;
+    return true;
+}
+
+std::string RadiosityPass::store_path(const std::string& folder, uint64_t key) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%016llx.rad", static_cast<unsigned long long>(key));
+    return (std::filesystem::path(folder) / name).string();
+}
+
 const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& frame,
                                                     const rad::RadiosityOptions& options,
                                                     const render::RenderOptions& render,
@@ -48,33 +99,7 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
     const render::Geometry& geometry = frame.geometry();
     const int threads = render.threads > 0 ? render.threads
                                            : int(std::max(1u, std::thread::hardware_concurrency()));
-    display_.reset();
-    receivers_.reset();
-    points_.reset();
-    if (!scene.globals.radiosity) return nullptr;
-    options_ = options;
-    mesh_ = std::make_unique<rad::SceneMesh>(
-        rad::build_scene_mesh(geometry, options.patch_size, rad::ambient_emission(scene),
-                              &scene.camera.location));
-    for (const std::string& w : mesh_->warnings) log.push_back(w);
-
-    const uint64_t key = rad::solution_key(frame, *mesh_, options);
-    const size_t unknowns = mesh_->unknowns();
-    reused_ = loaded_ = false;
-    if (options.from_file && !options.file.empty()) {
-        solution_ = rad::load_solution(options.file, key, unknowns);
-        loaded_ = true;
-    } else if (solution_ && solution_->scene_key == key && solution_->B.size() == unknowns &&
-               bounces_ == rad::effective_bounces(scene, options)) {
-        reused_ = true;  // only the camera changed: the solution is view-independent
-    } else {
-        info_ = {};
-        solution_ = rad::solve_scene(frame, *mesh_, options, threads, info_);
-        solution_->scene_key = key;
-        for (const std::string& w : info_.warnings) log.push_back(w);
-        if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
-    }
-    bounces_ = rad::effective_bounces(scene, options);
+    if (!solve(frame, options, threads, log)) return nullptr;
 
     const rad::DisplaySettings ds = rad::display_settings(scene, options);
     points_ = std::make_unique<rad::PointGather>(frame, *mesh_, &solution_->B,
@@ -127,8 +152,8 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
 std::string RadiosityPass::summary() const {
     if (!mesh_ || !solution_) return {};
     std::string line = "radiosity: " + std::to_string(mesh_->elements.size()) + " patches, ";
-    if (loaded_) {
-        line += "solution loaded from " + options_.file;
+    if (!loaded_from_.empty()) {
+        line += "solution loaded from " + loaded_from_;
     } else if (reused_) {
         line += "solution reused (only the camera changed)";
     } else {

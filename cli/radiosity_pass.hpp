@@ -38,10 +38,19 @@ public:
                                          const render::RenderOptions& render,
                                          std::vector<std::string>& log);
 
+    // The view-independent part of prepare() alone: meshes the scene and loads, reuses or
+    // solves (and saves) its patch solution. Returns false when the scene has no radiosity.
+    bool solve(const render::RenderFrame& frame,
+               const render::radiosity::RadiosityOptions& options, int threads,
+               std::vector<std::string>& log);
+    // Where Radiosity_Store keeps the solution of scene key `key`.
+    static std::string store_path(const std::string& folder, uint64_t key);
+
     // The +V line, once the frame is rendered (gather figures included).
     std::string summary() const;
 
     bool reused() const { return reused_; }
+    const std::string& loaded_from() const { return loaded_from_; }
     // The preview's receiving elements (null with the gather display).
     const render::radiosity::ReceiverMesh* receivers() const { return receivers_.get(); }
     const render::radiosity::Solution* solution() const {
@@ -59,7 +68,8 @@ private:
     std::unique_ptr<render::IndirectLight> display_;
     render::radiosity::SolveInfo info_;
     render::radiosity::RadiosityOptions options_;
-    bool reused_ = false, loaded_ = false;
+    bool reused_ = false;
+    std::string loaded_from_;  // the file the solution came from, if it was loaded
     int bounces_ = 0;
 };
 

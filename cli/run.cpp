@@ -5,13 +5,16 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <new>
 #include <optional>
 #include <thread>
 
 #include "cli/big_stack.hpp"
 #include "cli/command_line.hpp"
+#include "cli/farm.hpp"
 #include "cli/frames.hpp"
+#include "cli/merge.hpp"
 #include "cli/progress.hpp"
 #include "cli/radiosity_pass.hpp"
 #include "cli/stop_signals.hpp"
@@ -84,7 +87,42 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
                  frame.output.empty() ? "no file written (-F)" : ("wrote " + frame.output).c_str());
 }
 
+// --radiosity-only: the frame's patch solution, saved where the options say; no image.
+void solve_radiosity(const Options& o, const Frame& frame, const scene::Scene& scene,
+                     RadiosityPass& radiosity) {
+    const auto start = Clock::now();
+    const render::RenderFrame compiled(scene);
+    std::vector<std::string> log;
+    const int threads = effective_render_options(o).threads;
+    const bool solved = radiosity.solve(
+        compiled, o.radiosity, threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency())),
+        log);
+    for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
+    std::fprintf(stderr, "lumen: %s%s: %s in %s\n", o.input.c_str(),
+                 frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
+                 !solved ? "no radiosity"
+                 : radiosity.reused() ? "radiosity solution reused (only the camera changed)"
+                 : !radiosity.loaded_from().empty()
+                     ? ("radiosity solution loaded from " + radiosity.loaded_from()).c_str()
+                     : "radiosity solved",
+                 format_duration(seconds_since(start)).c_str());
+}
+
 }  // namespace
+
+scene::Scene interpret_frame(const Options& o, const Frame& frame, SourceManager& sources,
+                             const interp::WarningSink& warn,
+                             const std::shared_ptr<scene::ObjectQueries>& object_queries) {
+    interp::InterpOptions scene_options = frame.scene;
+    scene_options.object_queries = object_queries;                  // trace() and inside()
+    scene_options.function_host = render::shared_function_host();  // pigment functions
+    if (!frame.output.empty())  // #fopen may write beside the image
+        scene_options.io_folders.push_back(
+            std::filesystem::absolute(frame.output).parent_path().string());
+    scene::Scene scene = interp::interpret_file(sources, o.input, scene_options, warn);
+    apply_radiosity_switch(scene, o.radiosity);
+    return scene;
+}
 
 int run_frames(const Options& o, SourceManager& sources) {
     WarningLog warnings(print_diagnostic);  // a warning once per location, per frame
@@ -93,43 +131,30 @@ int run_frames(const Options& o, SourceManager& sources) {
     const auto object_queries = render::make_object_queries();
     for (const Frame& frame : plan_frames(o)) {
         const auto start = Clock::now();
-        interp::InterpOptions scene_options = frame.scene;
-        scene_options.object_queries = object_queries;  // trace() and inside()
-        scene_options.function_host = render::shared_function_host();  // pigment functions
-        if (!frame.output.empty())  // #fopen may write beside the image
-            scene_options.io_folders.push_back(
-                std::filesystem::absolute(frame.output).parent_path().string());
-        scene::Scene scene = interp::interpret_file(sources, o.input, scene_options, warn);
+        scene::Scene scene = interpret_frame(o, frame, sources, warn, object_queries);
         warnings.flush();
-        apply_radiosity_switch(scene, o.radiosity);
         const double parse_seconds = seconds_since(start);
         if (o.dump_scene) {
             std::fputs(interp::dump_scene_json(scene).c_str(), stdout);
             return 0;  // the first frame describes the scene
         }
         if (o.check) return report_unsupported(scene);
+        if (o.radiosity_only) {
+            solve_radiosity(o, frame, scene, radiosity);
+            continue;
+        }
         render_frame(o, frame, scene, parse_seconds, radiosity);
         throw_if_stop_requested();  // a signal during the file write: that frame is complete
     }
     return 0;
 }
 
-int run_command_line(const std::vector<std::string>& args) {
+int run_guarded(const std::function<int(SourceManager&)>& work) {
     SourceManager sources;  // outlives every diagnostic, which points into its files
     try {
-        const Options o = parse_command_line(args, sources);
-        if (o.help) {
-            std::fputs(usage_text().c_str(), stdout);
-            return 0;
-        }
-        if (o.version) {
-            std::printf("lumen %s (POV-Ray 3.7 scene language)\n", LUMEN_VERSION);
-            return 0;
-        }
-        for (const std::string& note : o.notes) std::fprintf(stderr, "%s\n", note.c_str());
         int status = 0;
         const StopSignals signals;
-        run_with_big_stack([&] { status = run_frames(o, sources); });
+        run_with_big_stack([&] { status = work(sources); });
         return status;
     } catch (const Interrupted& e) {
         std::fprintf(stderr, "lumen: stopped by %s; no image written for the unfinished frame\n",
@@ -143,6 +168,24 @@ int run_command_line(const std::vector<std::string>& args) {
         std::fprintf(stderr, "lumen: error: %s\n", e.what());
     }
     return 1;
+}
+
+int run_command_line(const std::vector<std::string>& args) {
+    if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
+    if (!args.empty() && args[0] == "farm") return run_farm({args.begin() + 1, args.end()});
+    return run_guarded([&](SourceManager& sources) {
+        const Options o = parse_command_line(args, sources);
+        if (o.help) {
+            std::fputs(usage_text().c_str(), stdout);
+            return 0;
+        }
+        if (o.version) {
+            std::printf("lumen %s (POV-Ray 3.7 scene language)\n", LUMEN_VERSION);
+            return 0;
+        }
+        for (const std::string& note : o.notes) std::fprintf(stderr, "%s\n", note.c_str());
+        return run_frames(o, sources);
+    });
 }
 
 }  // namespace lumen::cli

@@ -138,5 +138,41 @@ TEST_F(RunTest, UserFilesGoToTheScenesOrTheOutputFolder) {
     EXPECT_TRUE(fs::exists(dir_ / "elsewhere" / "w.txt"));
 }
 
+std::string bytes_of(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Tiles on the block grid (+BS8) rendered as separate runs (adaptive AA, an area light, one-
+// and two-thread runs) and merged give the file one run writes, byte for byte, overlapping
+// parts included; parts of different renders are refused.
+TEST_F(RunTest, MergedTilesAreTheWholeRenderByteForByte) {
+    write("tiles.pov", std::string(kScene) +
+                           "light_source { <-3, 4, -2> rgb 0.5 area_light x, y, 3, 3 jitter }\n"
+                           "plane { y, -1 pigment { checker rgb 1 rgb 0.2 } }\n");
+    const std::vector<std::string> common = {"tiles.pov", "+W40", "+H30", "+A0.1", "+AM2", "+R2", "+BS8"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> a = common;
+        a.insert(a.end(), extra.begin(), extra.end());
+        return a;
+    };
+    ASSERT_EQ(run(with({"+Owhole.png", "+WT2"})), 0);
+    ASSERT_EQ(run(with({"+Oa.png", "+WT1", "+SR1", "+ER16", "+SC1", "+EC40"})), 0);
+    ASSERT_EQ(run(with({"+Ob.png", "+WT2", "+SR17", "+ER30", "+SC1", "+EC24"})), 0);
+    ASSERT_EQ(run(with({"+Oc.png", "+WT1", "+SR9", "+ER30", "+SC17", "+EC40"})), 0);  // overlaps a and b
+    EXPECT_NE(bytes_of(dir_ / "a.png"), bytes_of(dir_ / "whole.png"));
+    ASSERT_EQ(run({"merge", "merged.png", "a.png", "b.png", "c.png"}), 0);
+    EXPECT_EQ(bytes_of(dir_ / "merged.png"), bytes_of(dir_ / "whole.png"));
+
+    std::string other = bytes_of(dir_ / "tiles.pov");
+    other.replace(other.find("0.4, 0.2"), 8, "0.2, 0.4");
+    write("other.pov", other);
+    ASSERT_EQ(run({"other.pov", "+W40", "+H30", "+Od.png"}), 0);
+    EXPECT_EQ(run({"merge", "bad.png", "a.png", "d.png"}), 1);  // another scene
+    EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
+    EXPECT_EQ(run({"merge", "bad.png"}), 1);
+    EXPECT_EQ(run({"merge", "bad.ppm", "a.png"}), 1);
+}
+
 }  // namespace
 }  // namespace lumen::cli

@@ -87,6 +87,22 @@ std::filesystem::path temporary_path(const std::string& path, FileType type) {
     return tmp;
 }
 
+// Renames the written temporary file to `path`, or removes it when writing failed.
+void finish_file(const std::filesystem::path& tmp, const std::string& path,
+                 const std::string& failure) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!failure.empty()) {
+        fs::remove(tmp, ec);
+        throw LumenError({}, "cannot write '" + path + "': " + failure);
+    }
+    fs::rename(tmp, fs::path(path), ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw LumenError({}, "cannot rename the image to '" + path + "': " + ec.message());
+    }
+}
+
 }  // namespace
 
 int encode_8bit(double v, const scene::Scene& scene, const OutputOptions& options) {
@@ -211,38 +227,30 @@ void ImageEncoder::encode(const Image& image, int left, int top, int right, int 
 }
 
 void ImageEncoder::write(const std::string& path) {
-    namespace fs = std::filesystem;
     Impl& m = *impl_;
-    fs::path tmp;
+    if (!m.writer.joinable()) {
+        write_encoded(m.out, m.options.type, path);
+        return;
+    }
+    m.writer.join();  // every row is encoded by now
+    finish_file(m.tmp, path, m.failure);
+}
+
+void write_encoded(const EncodedImage& image, FileType type, const std::string& path) {
+    const std::filesystem::path tmp = temporary_path(path, type);
     std::string failure;
-    if (m.writer.joinable()) {
-        m.writer.join();  // every row is encoded by now
-        tmp = m.tmp;
-        failure = m.failure;
-    } else {
-        tmp = temporary_path(path, m.options.type);
-        try {
-            switch (m.options.type) {
-                case FileType::PNG: write_png(m.out, tmp.string()); break;
-                case FileType::PPM: write_ppm(m.out, tmp.string()); break;
-                case FileType::EXR: write_with_oiio(m.out, "openexr", tmp.string()); break;
-                case FileType::HDR: write_with_oiio(m.out, "hdr", tmp.string()); break;
-                case FileType::TIFF: write_with_oiio(m.out, "tiff", tmp.string()); break;
-            }
-        } catch (const std::runtime_error& e) {
-            failure = e.what();
+    try {
+        switch (type) {
+            case FileType::PNG: write_png(image, tmp.string()); break;
+            case FileType::PPM: write_ppm(image, tmp.string()); break;
+            case FileType::EXR: write_with_oiio(image, "openexr", tmp.string()); break;
+            case FileType::HDR: write_with_oiio(image, "hdr", tmp.string()); break;
+            case FileType::TIFF: write_with_oiio(image, "tiff", tmp.string()); break;
         }
+    } catch (const std::runtime_error& e) {
+        failure = e.what();
     }
-    std::error_code ec;
-    if (!failure.empty()) {
-        fs::remove(tmp, ec);
-        throw LumenError({}, "cannot write '" + path + "': " + failure);
-    }
-    fs::rename(tmp, fs::path(path), ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw LumenError({}, "cannot rename the image to '" + path + "': " + ec.message());
-    }
+    finish_file(tmp, path, failure);
 }
 
 void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,

@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "render/image_files.hpp"
 #include "render/render.hpp"
 
 namespace lumen::render {
@@ -46,6 +47,10 @@ private:
 // Encodes all of `image` (on all cores) and writes it, as ImageEncoder::write.
 void write_image(const Image& image, const scene::Scene& scene, const OutputOptions& options,
                  const std::string& path);
+
+// Writes encoded pixels as a `type` file, completely or not at all (a temporary file renamed
+// at the end). Throws LumenError on failure.
+void write_encoded(const EncodedImage& image, FileType type, const std::string& path);
 
 // The 8-bit value POV-Ray would write for working-space value v in `scene` (for tests).
 int encode_8bit(double v, const scene::Scene& scene, const OutputOptions& options);

@@ -11,6 +11,7 @@ packages=(
     clang libclang-rt-14-dev
     bc  # bench/render_vs_povray.sh arithmetic
     python3  # tools/corpus, tools/compare-builds
+    slurm-wlm munge  # lumen farm --slurm and its test cluster (tools/slurm-local-cluster)
 )
 # Optional: `--bench` adds what the benchmarks need: gnuplot for the charts (make
 # bench-radiosity, bench/parse_scale.sh), Embree for bench/mesh_rays.cpp's comparison.

@@ -54,6 +54,9 @@ struct RadiosityOptions {
     // POV's +RF keys, here meaning the patch solution (not POV's irradiance cache).
     std::string file;
     bool from_file = false, to_file = false;
+    // Radiosity_Store: a folder of solutions named by scene key, loaded where one is there and
+    // saved after a solve, so that the processes of a farm share one solve (cli/farm.hpp).
+    std::string store;
     bool verbose = false;  // +V: one line per phase on stderr
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "base/diagnostics.hpp"
@@ -18,10 +19,8 @@ constexpr int kVersion = 1;
     throw LumenError({}, "radiosity solution file '" + path + "': " + why);
 }
 
-}  // namespace
-
-void save_solution(const Solution& s, const std::string& path) {
-    std::ofstream out(path);
+void write_solution(const Solution& s, const std::string& tmp, const std::string& path) {
+    std::ofstream out(tmp);
     if (!out) bad_file(path, "cannot be written");
     out << kMagic << ' ' << kVersion << '\n'
         << "scene " << s.scene_key << '\n'
@@ -36,7 +35,24 @@ void save_solution(const Solution& s, const std::string& path) {
         out << buf;
     }
     out << "end\n";
-    if (!out) bad_file(path, "write failed");
+    out.close();
+    if (!out) {
+        std::remove(tmp.c_str());
+        bad_file(path, "write failed");
+    }
+}
+
+}  // namespace
+
+void save_solution(const Solution& s, const std::string& path) {
+    // Written under a name of its own and renamed, so that a reader (another process of a
+    // farm sharing the file) sees a whole file or none.
+    const std::string tmp = path + ".tmp" + std::to_string(std::random_device{}());
+    write_solution(s, tmp, path);
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        bad_file(path, "cannot be written");
+    }
 }
 
 Solution load_solution(const std::string& path, uint64_t scene_key, size_t unknowns) {
