@@ -94,9 +94,8 @@ void prepare_work(const FarmPlan& plan) {
 
 void finish_plan(const FarmPlan& plan) {
     if (!plan.tiles.empty()) {
-        const MergeResult r = merge_parts(plan.tiles, plan.output);
-        std::fprintf(stderr, "lumen farm: %zu tiles joined into %s (%dx%d)\n", plan.tiles.size(),
-                     plan.output.c_str(), r.width, r.height);
+        if (run_merge(merge_arguments(plan)) != 0)
+            throw LumenError({}, "lumen farm: the tiles could not be joined");
         return;
     }
     for (const std::string& frame : plan.frames)

@@ -45,6 +45,17 @@ TileGrid tile_grid(int parts, int width, int height, int block) {
     return best;
 }
 
+std::vector<std::string> merge_arguments(const FarmPlan& plan) {
+    std::vector<std::string> args = {plan.output, "--size=" + std::to_string(plan.width) + "," +
+                                                      std::to_string(plan.height)};
+    for (size_t i = 0; i < plan.tiles.size(); ++i) {
+        args.push_back("--at=" + std::to_string(plan.tile_origins[i].first) + "," +
+                       std::to_string(plan.tile_origins[i].second));
+        args.push_back(plan.tiles[i]);
+    }
+    return args;
+}
+
 FarmPlan plan_farm(const std::vector<std::string>& args, const Options& o, const FarmSettings& s) {
     const SourceLoc cmd;
     if (!o.output_to_file) throw LumenError(cmd, "lumen farm writes files: leave out -F");
@@ -89,6 +100,8 @@ FarmPlan plan_farm(const std::vector<std::string>& args, const Options& o, const
 
     plan.output = frames.front().output;
     const int w = o.render.width, h = o.render.height;
+    plan.width = w;
+    plan.height = h;
     const int block = render::effective_block_size(o.render);
     const TileGrid grid = tile_grid(s.parts, w, h, block);
     const std::string ext = extension_for(o.image.type);
@@ -112,7 +125,9 @@ FarmPlan plan_farm(const std::vector<std::string>& args, const Options& o, const
             run.args.push_back("Start_Column=" + std::to_string(left));
             run.args.push_back("End_Column=" + std::to_string(right));
             run.args.push_back("Output_File_Name=" + file);
+            run.args.push_back("Output_Crop=on");  // only its area: lumen merge places it
             plan.tiles.push_back(file);
+            plan.tile_origins.emplace_back(left - 1, top - 1);
             plan.parts.push_back(std::move(run));
         }
     }

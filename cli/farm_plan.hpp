@@ -31,6 +31,8 @@ struct FarmPlan {
     // A still: the tiles, joined into `output` at the end. An animation: the frames (the parts
     // write them in place), checked at the end.
     std::vector<std::string> tiles;
+    std::vector<std::pair<int, int>> tile_origins;  // each tile's top-left pixel (Output_Crop)
+    int width = 0, height = 0;                      // the still's size
     std::string output;
     std::vector<std::string> frames;
     std::string work;
@@ -47,6 +49,10 @@ TileGrid tile_grid(int parts, int width, int height, int block);
 // Where tile boundary i of n falls on an axis of `size` pixels: on the render's block grid
 // (render/render.hpp: anti-aliasing then gives a tile's pixels their values in the whole image).
 int tile_edge(int i, int n, int size, int block);
+
+// The tiles' join: `lumen merge`'s arguments after "merge" (the output, its size, and each
+// tile with its position).
+std::vector<std::string> merge_arguments(const FarmPlan& plan);
 
 // The plan for lumen's arguments `args` (already parsed into `o`). Throws LumenError where the
 // arguments cannot be farmed (no output file, a partial render already, ...).

@@ -64,6 +64,15 @@ TEST(FarmPlan, TilesCoverTheImageOnceOnBlockEdges) {
         for (const int c : covered) ASSERT_EQ(c, 1) << w << "x" << h << " in " << parts;
         EXPECT_EQ(p.tiles.size(), size_t(parts));
         EXPECT_EQ(parse(p.parts[1].args).output, p.tiles[1]);
+        // Each tile writes its area alone and the join places it there.
+        const Options tile = parse(p.parts.back().args);
+        EXPECT_TRUE(tile.crop_output);
+        const render::RenderOptions r = effective_render_options(tile);
+        const std::vector<std::string> m = merge_arguments(p);
+        EXPECT_EQ(m[0], "s.png");
+        EXPECT_EQ(m[1], "--size=" + std::to_string(w) + "," + std::to_string(h));
+        EXPECT_EQ(m[m.size() - 2], "--at=" + std::to_string(r.start_col) + "," + std::to_string(r.start_row));
+        EXPECT_EQ(m.back(), p.tiles.back());
     }
 }
 

@@ -70,8 +70,8 @@ void write_scripts(const FarmPlan& plan) {
     write_script(script_path(plan, "parts"), parts);
     std::string finish;
     if (!plan.tiles.empty()) {
-        std::vector<std::string> args = {"merge", plan.output};
-        args.insert(args.end(), plan.tiles.begin(), plan.tiles.end());
+        std::vector<std::string> args = merge_arguments(plan);
+        args.insert(args.begin(), "merge");
         finish = "exec " + command_line(lumen, args) + "\n";
     } else {
         finish = "for f in";

@@ -293,6 +293,7 @@ const IniKey kKeys[] = {
     {"Radiosity_From_File",
      [](Options& o, const Setting& s) { o.radiosity.from_file = to_bool(s); }},
     {"Radiosity_To_File", [](Options& o, const Setting& s) { o.radiosity.to_file = to_bool(s); }},
+    {"Output_Crop", [](Options& o, const Setting& s) { o.crop_output = to_bool(s); }},
     {"Radiosity_Store", [](Options& o, const Setting& s) { o.radiosity.store = s.text; }},
     {"Radiosity_Vain_Pretrace", accepted},  // lumen has no pretrace
     // Accepted so POV-Ray INI files load; they change nothing in lumen's output.

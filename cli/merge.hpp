@@ -12,13 +12,22 @@ struct MergeResult {
     size_t blank = 0;  // pixels no part rendered (or every part rendered black)
 };
 
-// Reads every part (files lumen writes: png, ppm, tif, exr, hdr; all of one size and format)
-// and writes `output`, of the same type, completely or not at all. Throws LumenError naming
-// the part when one cannot be read, differs in size or format from the first, or gives a
-// pixel another part rendered differently (overlapping parts must agree).
-MergeResult merge_parts(const std::vector<std::string>& parts, const std::string& output);
+// A part: a whole-size partial render (at 0, 0), or a cropped one (Output_Crop) whose
+// top-left pixel is (x, y) of the whole.
+struct MergePart {
+    std::string path;
+    int x = 0, y = 0;
+};
 
-// The subcommand: `lumen merge OUTPUT PART...`. Returns the exit status.
+// Reads every part (files lumen writes: png, ppm, tif, exr, hdr; all of one format) into a
+// width x height image (0: the first part's size) and writes `output`, of the same type,
+// completely or not at all. Throws LumenError naming the part when one cannot be read,
+// differs in format from the first, does not fit, or gives a pixel another part rendered
+// differently (overlapping parts must agree).
+MergeResult merge_parts(const std::vector<MergePart>& parts, const std::string& output,
+                        int width = 0, int height = 0);
+
+// The subcommand: `lumen merge OUTPUT [--size=W,H] [--at=X,Y] PART...`. Returns the exit status.
 int run_merge(const std::vector<std::string>& args);
 
 }  // namespace lumen::cli

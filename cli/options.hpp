@@ -25,6 +25,9 @@ struct Options {
 
     // Partial render exactly as given: a fraction or a 1-based index (resolved by pixel_range).
     std::optional<double> start_row, end_row, start_col, end_col;
+    // Output_Crop (lumen's): a partial render's file holds its area alone rather than the
+    // whole image with zero margins (POV-Ray's way); lumen farm's tiles, joined by lumen merge.
+    bool crop_output = false;
 
     // Animation. The clock is only used when no frame range is given.
     double clock = 0.0;

@@ -60,13 +60,22 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     options.indirect = radiosity.prepare(compiled, o.radiosity, options, log);
     for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
     ProgressBar bar(terminal, label);
-    // Whole images are encoded block by block while they render: only the file write is left
-    // at the end (a partial render encodes its zeroed margins too, after the render).
+    // Images are encoded block by block while they render: only the file write is left at
+    // the end, which a whole image streams as its rows complete. A partial render's margins
+    // are zero samples (alpha too), for lumen merge; Output_Crop leaves them out.
     std::optional<render::ImageEncoder> encoder;
     render::BlockDone encode_block;
-    if (!frame.output.empty() && render::covers_whole_image(options)) {
-        encoder.emplace(scene, o.image, options.width, options.height);
-        encoder->stream_to(frame.output);
+    if (!frame.output.empty()) {
+        const render::PixelArea a = render::render_area(options);
+        const bool whole = render::covers_whole_image(options), crop = !whole && o.crop_output;
+        if (crop) {
+            encoder.emplace(scene, o.image, a.x1 - a.x0 + 1, a.y1 - a.y0 + 1);
+            encoder->set_origin(a.x0, a.y0);
+        } else {
+            encoder.emplace(scene, o.image, options.width, options.height);
+        }
+        if (whole || crop) encoder->stream_to(frame.output);
+        else encoder->clear_outside(a.x0, a.y0, a.x1, a.y1);
         encode_block = [&](const render::Image& im, int l, int t, int r, int b) {
             encoder->encode(im, l, t, r, b);
         };
@@ -78,7 +87,6 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     for (const Diagnostic& d : compiled.geometry().shape_warnings()) print_diagnostic(d);
     if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
     if (encoder) encoder->write(frame.output);
-    else if (!frame.output.empty()) render::write_image(image, scene, o.image, frame.output);
     std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s\n",
                  o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
                  format_duration(parse_seconds).c_str(), image.width, image.height,

@@ -163,6 +163,13 @@ TEST_F(RunTest, MergedTilesAreTheWholeRenderByteForByte) {
     EXPECT_NE(bytes_of(dir_ / "a.png"), bytes_of(dir_ / "whole.png"));
     ASSERT_EQ(run({"merge", "merged.png", "a.png", "b.png", "c.png"}), 0);
     EXPECT_EQ(bytes_of(dir_ / "merged.png"), bytes_of(dir_ / "whole.png"));
+    // Cropped parts (Output_Crop), placed by position.
+    ASSERT_EQ(run(with({"+Oe.png", "+SR1", "+ER8", "+SC1", "+EC40", "Output_Crop=on"})), 0);
+    ASSERT_EQ(run(with({"+Of.png", "+SR9", "+ER30", "+SC1", "+EC40", "Output_Crop=on"})), 0);
+    EXPECT_LT(bytes_of(dir_ / "e.png").size(), bytes_of(dir_ / "a.png").size());
+    ASSERT_EQ(run({"merge", "cropped.png", "--size=40,30", "e.png", "--at=0,8", "f.png"}), 0);
+    EXPECT_EQ(bytes_of(dir_ / "cropped.png"), bytes_of(dir_ / "whole.png"));
+    EXPECT_EQ(run({"merge", "bad.png", "--size=40,30", "--at=0,9", "f.png"}), 1);  // off the edge
 
     std::string other = bytes_of(dir_ / "tiles.pov");
     other.replace(other.find("0.4, 0.2"), 8, "0.2, 0.4");

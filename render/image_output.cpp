@@ -115,6 +115,7 @@ struct ImageEncoder::Impl {
     bool floating = false;
     std::optional<LevelTable> levels;  // 8-bit files: the level of a positive value
     EncodedImage out;  // float formats get linear light; integer ones levels 0..maxval
+    int origin_x = 0, origin_y = 0;  // the rendered pixel at out's top-left (set_origin)
 
     // Streaming (stream_to): pixels encoded per row; the writer thread takes row y once
     // row_pixels[y] reaches the width (acquire pairs with the encoders' release).
@@ -190,6 +191,26 @@ void ImageEncoder::stream_to(const std::string& path) {
     });
 }
 
+void ImageEncoder::set_origin(int x, int y) {
+    impl_->origin_x = x;
+    impl_->origin_y = y;
+}
+
+void ImageEncoder::clear_outside(int left, int top, int right, int bottom) {
+    EncodedImage& out = impl_->out;
+    const size_t row = size_t(out.width) * out.channels, c = size_t(out.channels);
+    float* v = out.values.data();
+    for (int y = 0; y < out.height; ++y) {
+        float* r = v + size_t(y) * row;
+        if (y < top || y > bottom) {
+            std::fill(r, r + row, 0.0f);
+            continue;
+        }
+        std::fill(r, r + size_t(std::max(0, left)) * c, 0.0f);
+        if (right + 1 < out.width) std::fill(r + size_t(right + 1) * c, r + row, 0.0f);
+    }
+}
+
 void ImageEncoder::encode(const Image& image, int left, int top, int right, int bottom) {
     const Impl& m = *impl_;
     const Encoding& e = m.encoding;
@@ -198,7 +219,7 @@ void ImageEncoder::encode(const Image& image, int left, int top, int right, int 
     for (int y = top; y <= bottom; ++y) {
         for (int x = left; x <= right; ++x) {
             const float* p = image.at(x, y);
-            float* q = values + (size_t(y) * image.width + x) * channels;
+            float* q = values + (size_t(y - m.origin_y) * m.out.width + (x - m.origin_x)) * channels;
             const float alpha = std::clamp(1.0f - p[4], 0.0f, 1.0f);
             for (int c = 0; c < 3; ++c) {
                 float v = p[c];
@@ -218,7 +239,8 @@ void ImageEncoder::encode(const Image& image, int left, int top, int right, int 
     bool any_complete = false;
     for (int y = top; y <= bottom; ++y) {
         const int n = right - left + 1;
-        any_complete |= impl_->row_pixels[y].fetch_add(n, std::memory_order_acq_rel) + n == m.out.width;
+        any_complete |= impl_->row_pixels[y - m.origin_y].fetch_add(n, std::memory_order_acq_rel) + n ==
+                        m.out.width;
     }
     if (any_complete) {
         { std::lock_guard lock(impl_->mutex); }  // the writer is waiting or will see the count

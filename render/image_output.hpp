@@ -31,6 +31,12 @@ public:
     // PNG: starts writing `path` on a thread of its own, each row as soon as all of it is
     // encoded, so the compression overlaps the render. Other formats wait for write().
     void stream_to(const std::string& path);
+    // A cropped partial render: the encoder's (width x height) pixels are the rendered ones
+    // from (x, y) on; encode() takes the rendered image's coordinates.
+    void set_origin(int x, int y);
+    // A partial render's margins: every sample outside [left, right] x [top, bottom]
+    // (inclusive) written as 0, alpha too (nothing rendered there: what lumen merge reads).
+    void clear_outside(int left, int top, int right, int bottom);
     // Encodes pixels [left, right] x [top, bottom] (inclusive) of `image`.
     void encode(const Image& image, int left, int top, int right, int bottom);
     // Writes every encoded pixel to `path` (through a temporary file renamed at the end, so a

@@ -52,6 +52,11 @@ using Progress = std::function<void(double)>;
 // (inclusive) are final; calls for different blocks may run at the same time.
 using BlockDone = std::function<void(const Image&, int left, int top, int right, int bottom)>;
 
+// The pixels a render computes (+SR +ER +SC +EC), inclusive, 0-based.
+struct PixelArea {
+    int x0, y0, x1, y1;
+};
+PixelArea render_area(const RenderOptions& options);
 // False for a partial render (+SR +ER +SC +EC that leave out part of the image).
 bool covers_whole_image(const RenderOptions& options);
 
@@ -63,6 +68,8 @@ int effective_block_size(const RenderOptions& options);
 class RenderFrame;  // render/frame.hpp
 
 // Renders the frame's scene (its pre-passes, such as options.indirect, done on the same frame).
+// Pixels outside a partial render's area are zero, unless `block_done` is given: a caller that
+// takes the blocks as they finish gets those pixels unset.
 Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats* stats = nullptr,
              const Progress& progress = {}, const BlockDone& block_done = {});
 
