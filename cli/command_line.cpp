@@ -109,7 +109,7 @@ std::string usage_text() {
            switch_help() +
            "\n"
            "INI-only keys include Declare=NAME=value, File_Gamma=, Bits_Per_Color=, "
-           "Include_Ini=.\n"
+           "Include_Ini=,\nOutput_Crop=on (lumen: a partial render's file holds its area alone).\n"
            "\n"
            "evaluation limits (an endless loop or runaway scene stops with an error naming one):\n"
            "  Max_Loop_Iterations=N (1e7 per loop), Max_Eval_Steps=N (1e8 loop iterations and\n"

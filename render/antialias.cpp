@@ -114,6 +114,7 @@ Sample BlockRenderer::sample(double x, double y, ThreadState& state,
 
 void BlockRenderer::render(int left, int top, int right, int bottom, Image& image,
                            ThreadState& state, uint64_t& primary_rays) const {
+    ++state.block;
     if (!options_.antialias)
         render_plain(left, top, right, bottom, image, state, primary_rays);
     else if (options_.aa_method == 2)

@@ -3,6 +3,7 @@
 #pragma once
 #include <bit>
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -20,6 +21,15 @@ struct ThreadState {
     // Area-light grid cache (one slot per sample; `valid` marks filled slots).
     std::vector<glm::dvec3> area_filter;
     std::vector<unsigned char> area_valid;
+
+    // The render block this thread is on (BlockRenderer counts them). Scratch that an
+    // IndirectLight keeps per block (radiosity's point-gather caches) is tagged with it, so a
+    // new block starts afresh: a pixel's value then depends on its block alone, not on which
+    // thread rendered which blocks before it, nor on the blocks a partial render leaves out.
+    uint64_t block = 0;
+    std::shared_ptr<void> block_scratch;
+    const void* block_scratch_owner = nullptr;
+    uint64_t block_scratch_block = 0;
 
     double uniform() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng); }
 

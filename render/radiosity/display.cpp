@@ -37,10 +37,10 @@ public:
     Preview(const SceneMesh& mesh, const ReceiverMesh& receivers, const PointGather* points,
             const DisplaySettings& s)
         : mesh_(mesh), receivers_(receivers), points_(points), s_(s) {}
-    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
+    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState& state) const override {
         glm::dvec3 bary;
         const long e = element_at(mesh_, hit, normal, bary);
-        if (e < 0) return points_ ? apply_knobs(s_, points_->incident(hit.point, normal, 1))
+        if (e < 0) return points_ ? apply_knobs(s_, points_->incident(hit.point, normal, state))
                                   : glm::dvec3(0);
         const MeshElement& el = mesh_.elements[size_t(e)];
         const uint32_t side = seen_side(el, hit.normal, normal);
@@ -51,7 +51,7 @@ public:
         if (points_) {
             bool own = !receivers_.covers(e, side);
             for (uint32_t v : el.v) own = own || (mesh_.vertices[v].sealed >> side & 1);
-            if (own) return apply_knobs(s_, points_->incident(hit.point, normal, 1));
+            if (own) return apply_knobs(s_, points_->incident(hit.point, normal, state));
         }
         return apply_knobs(s_, receivers_.value(e, bary, side));
     }
@@ -67,8 +67,8 @@ private:
 class Gather final : public IndirectLight, public GatherStats {
 public:
     Gather(const PointGather& points, const DisplaySettings& s) : points_(points), s_(s) {}
-    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState&) const override {
-        return apply_knobs(s_, points_.incident(hit.point, normal, 1));
+    glm::dvec3 incident(const Hit& hit, const glm::dvec3& normal, ThreadState& state) const override {
+        return apply_knobs(s_, points_.incident(hit.point, normal, state));
     }
     size_t cache_points() const override { return points_.cache_points(); }
     double gather_seconds() const override { return points_.gather_seconds(); }

@@ -60,14 +60,15 @@ bool IrradianceCache::lookup(const glm::dvec3 &p, const glm::dvec3 &n,
         continue;
       covered = covered || e < a;
       const double w = (1 - e / (kFade * a)) * (1 - e / (kFade * a));
-      // Extrapolated by the gradients, each channel kept within [0, 2 G] (a gradient from
-      // a few noisy strata must not overshoot).
+      // Extrapolated by the gradients, each channel kept within [G / 2, 2 G]: a gradient
+      // from a few noisy strata must not overshoot either way (with [0, 2 G] a lone record
+      // of a render block extrapolated a lit wall of rad_def_test_36.pov to black).
       const glm::dvec3 turn = glm::cross(c.normal, n);
       glm::dvec3 value = c.G;
       for (int ch = 0; ch < 3; ++ch)
         value[ch] = std::clamp(c.G[ch] + glm::dot(d, c.gradients.translation[ch]) +
                                    glm::dot(turn, c.gradients.rotation[ch]),
-                               0.0, 2 * c.G[ch]);
+                               0.5 * c.G[ch], 2 * c.G[ch]);
       sum += w * value;
       wsum += w;
     }

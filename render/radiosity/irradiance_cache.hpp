@@ -1,4 +1,4 @@
-// A Ward-style irradiance cache shared by the render threads (Ward 1988; with Ward and
+// A Ward-style irradiance cache, used by several threads at once (Ward 1988; with Ward and
 // Heckbert's gradients where the gather gives them, which POV-Ray does not use): a point reuses the records whose error e = |d|/R + sqrt(1 − n·n') is below the
 // cache error a; its value is the average of every record with e < 3a weighted (1 − e/3a)²,
 // so weights fade to 0 at the edge of a record's reach: no seams where the set of records

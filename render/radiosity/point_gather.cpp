@@ -13,12 +13,43 @@ namespace lumen::render::radiosity {
 PointGather::PointGather(const RenderFrame& frame, const SceneMesh& mesh,
                          const std::vector<glm::dvec3>* B, const PointGatherSettings& settings)
     : frame_(frame), mesh_(mesh), B_(B), s_(settings) {
-    if (!B_) return;
+    if (B_) caches_ = make_caches();
+}
+
+PointGather::Caches PointGather::make_caches() const {
+    Caches caches;
     CacheSettings c = s_.cache;
     for (int level = 1; level <= std::max(1, s_.bounces); ++level) {
-        caches_.push_back(std::make_unique<IrradianceCache>(c, mesh.bounds.hi));
+        caches.push_back(std::make_unique<IrradianceCache>(c, mesh_.bounds.hi));
         c.error *= 2;  // deeper levels are seen through a gather: coarser is enough
     }
+    return caches;
+}
+
+namespace {
+// The caches of the render block whose gather runs on this thread, for its deeper levels.
+thread_local const std::vector<std::unique_ptr<IrradianceCache>>* t_block_caches = nullptr;
+}  // namespace
+
+glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, ThreadState& state) const {
+    if (state.block_scratch_owner != this || state.block_scratch_block != state.block ||
+        !state.block_scratch) {
+        state.block_scratch = std::make_shared<Caches>(make_caches());
+        state.block_scratch_owner = this;
+        state.block_scratch_block = state.block;
+    }
+    const Caches& caches = *static_cast<const Caches*>(state.block_scratch.get());
+    const Caches* outer = t_block_caches;
+    t_block_caches = &caches;
+    const size_t before = caches.front()->size();
+    const glm::dvec3 g = incident_in(caches, p, n, 1);
+    block_records_ += caches.front()->size() - before;
+    t_block_caches = outer;
+    return g;
+}
+
+glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int level) const {
+    return incident_in(t_block_caches ? *t_block_caches : caches_, p, n, level);
 }
 
 glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level) const {
@@ -35,8 +66,9 @@ glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level
     return m.emission + m.rho * in;
 }
 
-glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int level) const {
-    IrradianceCache& cache = *caches_[size_t(std::clamp(level, 1, int(caches_.size())) - 1)];
+glm::dvec3 PointGather::incident_in(const Caches& caches, const glm::dvec3& p,
+                                    const glm::dvec3& n, int level) const {
+    IrradianceCache& cache = *caches[size_t(std::clamp(level, 1, int(caches.size())) - 1)];
     glm::dvec3 g;
     if (cache.lookup(p, n, g)) return g;
     const auto t0 = std::chrono::steady_clock::now();
@@ -60,7 +92,7 @@ glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int l
 }
 
 size_t PointGather::cache_points() const {
-    size_t n = 0;
+    size_t n = block_records_;
     for (const auto& c : caches_) n += c->size();
     return n;
 }

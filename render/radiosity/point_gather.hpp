@@ -15,6 +15,7 @@
 #include "render/radiosity/irradiance_cache.hpp"
 #include "render/radiosity/scene_mesh.hpp"
 #include "render/radiosity/scene_solution.hpp"
+#include "render/trace_state.hpp"
 
 namespace lumen::render::radiosity {
 
@@ -38,6 +39,11 @@ public:
     // Incident indirect light at surface point p on the side of unit normal n, for a gather
     // of `level` (1: a camera hit), through that level's cache. Needs B.
     glm::dvec3 incident(const glm::dvec3& p, const glm::dvec3& n, int level) const;
+    // The same for a camera hit in a render block, through caches of that block's own
+    // (kept in `state`, and used by the deeper levels of its gathers): the value does not
+    // depend on the order in which threads render blocks, or on which blocks a partial
+    // render leaves out (lumen farm's tiles are the whole render's pixels).
+    glm::dvec3 incident(const glm::dvec3& p, const glm::dvec3& n, ThreadState& state) const;
 
     size_t cache_points() const;
     double gather_seconds() const { return gather_ns_.load() * 1e-9; }
@@ -47,7 +53,13 @@ private:
     const SceneMesh& mesh_;
     const std::vector<glm::dvec3>* B_;
     PointGatherSettings s_;
-    std::vector<std::unique_ptr<IrradianceCache>> caches_;  // per level, 1 first
+    using Caches = std::vector<std::unique_ptr<IrradianceCache>>;  // per level, 1 first
+    Caches make_caches() const;
+    glm::dvec3 incident_in(const Caches& caches, const glm::dvec3& p, const glm::dvec3& n,
+                           int level) const;
+
+    Caches caches_;  // shared: gathers outside render blocks (the receivers')
+    mutable std::atomic<size_t> block_records_{0};
     mutable std::atomic<uint64_t> gather_ns_{0};
 };
 

@@ -10,7 +10,12 @@ cp "$scenes/room.pov" .
 check() { cmp "$1" "$2" || { echo "FAIL: $1 differs from $2" >&2; exit 1; }; }
 
 still=(room.pov +W96 +H72 +A0.1 +AM2 +R2)
-"$lumen" "${still[@]}" +Osingle.png
+"$lumen" "${still[@]}" +Osingle.png +V 2> single_still.log
+# The scene has radiosity point gathers (their per-block caches keep pixels independent of
+# threads and tiles), and one thread gives what two do.
+grep -q "point gathers" single_still.log || { echo "FAIL: no point gathers to test" >&2; exit 1; }
+"$lumen" "${still[@]}" +WT1 +Oone_thread.png 2> /dev/null
+check one_thread.png single.png
 "$lumen" farm --jobs=2 --parts=6 "${still[@]}" +Ofarmed.png
 check farmed.png single.png
 [ ! -e farmed.farm ] || { echo "FAIL: the work folder was left behind" >&2; exit 1; }

@@ -6,7 +6,7 @@ global_settings {
   assumed_gamma 1
   radiosity { count 40 recursion_limit 1 error_bound 0.5 }
 }
-camera { location <-1 + clock, 1.2, -3.5> look_at <0, 0.8, 0> angle 60 }
+camera { location <-0.8 + clock, 1.2, -1.9> look_at <0, 0.8, 0.5> angle 75 }
 light_source { <0, 2.6, 0> rgb 1 area_light <0.5, 0, 0>, <0, 0, 0.5>, 2, 2 }
 #declare Wall = texture { pigment { rgb 0.8 } finish { diffuse 0.8 ambient 0 } }
 box { <-2, 0, -2>, <2, 3, 2> texture { Wall } hollow }
