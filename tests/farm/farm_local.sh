@@ -34,6 +34,17 @@ for log in farmed/room.farm/logs/part-*.log; do
     grep -q "solution loaded from" "$log" || { echo "FAIL: $log did not load the solution" >&2; exit 1; }
 done
 
+# SIGTERM stops every part (each removes its unfinished file) and writes no image.
+"$lumen" farm --jobs=2 --parts=4 room.pov +W1920 +H1080 +A0.0 +R3 +Ostopped.png 2> stopped.log &
+pid=$!
+for _ in $(seq 400); do [ -e stopped.farm/logs/part-0.log ] && break; sleep 0.05; done
+sleep 0.2
+kill -TERM "$pid"
+status=0; wait "$pid" || status=$?
+[ "$status" = 143 ] || { echo "FAIL: lumen farm ended with $status after SIGTERM" >&2; cat stopped.log >&2; exit 1; }
+[ ! -e stopped.png ] && [ -z "$(ls -A stopped.farm/parts)" ] ||
+    { echo "FAIL: files left after SIGTERM" >&2; ls -aR stopped.farm >&2; exit 1; }
+
 printf '#version 3.7;\nsphere { 0, 1 pigment { colour Nope } }\n' > bad.pov
 if "$lumen" farm --jobs=2 bad.pov +W32 +H24 2> bad.log; then
     echo "FAIL: a broken scene was farmed" >&2; exit 1
