@@ -6,6 +6,7 @@
 
 #include "base/diagnostics.hpp"
 #include "cli/command_line.hpp"
+#include "cli/farm_process.hpp"
 #include "cli/farm_run.hpp"
 #include "cli/run.hpp"
 #include "cli/text.hpp"
@@ -33,11 +34,13 @@ constexpr const char* kUsage =
     "  --poll=SECONDS     Slurm: how often to ask squeue (1)\n"
     "  --work=DIR         parts, logs and scripts (the output's name + .farm); Slurm's nodes\n"
     "                     must see it and the scene at the same paths\n"
-    "  --keep             keep the work folder after a successful run\n";
+    "  --keep             keep the work folder after a successful run\n"
+    "  --plan             print the plan as an sh script (each run a command line), and\n"
+    "                     run nothing\n";
 
 struct FarmCommand {
     FarmSettings settings;
-    bool slurm = false, keep = false, help = false;
+    bool slurm = false, keep = false, help = false, print_plan = false;
     int jobs = 1;
     SlurmSettings slurm_settings;
     std::vector<std::string> lumen_args;
@@ -53,7 +56,7 @@ int to_count(const std::string& option, const std::string& value) {
 
 FarmCommand parse_farm_args(const std::vector<std::string>& args) {
     static const std::vector<std::string> kOptions = {
-        "--parts", "--jobs", "--slurm", "--cpus-per-task", "--sbatch", "--poll", "--work", "--keep", "--help"};
+        "--parts", "--jobs", "--slurm", "--cpus-per-task", "--sbatch", "--poll", "--work", "--keep", "--plan", "--help"};
     FarmCommand c;
     size_t i = 0;
     for (; i < args.size() && args[i].rfind("--", 0) == 0; ++i) {
@@ -69,6 +72,7 @@ FarmCommand parse_farm_args(const std::vector<std::string>& args) {
         else if (name == "--poll") c.slurm_settings.poll_seconds = std::max(0.05, std::atof(value.c_str()));
         else if (name == "--work") c.settings.work = value;
         else if (name == "--keep") c.keep = true;
+        else if (name == "--plan") c.print_plan = true;
         else if (name == "--help") c.help = true;
         else break;  // a lumen option (--threads, ...)
     }
@@ -78,6 +82,20 @@ FarmCommand parse_farm_args(const std::vector<std::string>& args) {
             throw LumenError({}, "farm option '" + a + "' after the scene's arguments",
                              "put farm options first: lumen farm " + a + " scene.pov ...");
     return c;
+}
+
+// --plan: the plan as an sh script on stdout, each run a command line, in order.
+void print_plan(const FarmPlan& plan) {
+    const std::string lumen = lumen_executable();
+    std::printf("set -e\nmkdir -p %s\n", shell_quote((fs::path(plan.work) / "parts").string()).c_str());
+    if (plan.solve) std::printf("# %s\n%s\n", plan.solve->label.c_str(), command_line(lumen, plan.solve->args).c_str());
+    for (const FarmRun& run : plan.parts)
+        std::printf("# %s\n%s\n", run.label.c_str(), command_line(lumen, run.args).c_str());
+    if (!plan.tiles.empty()) {
+        std::vector<std::string> merge = merge_arguments(plan);
+        merge.insert(merge.begin(), "merge");
+        std::printf("# join the tiles\n%s\n", command_line(lumen, merge).c_str());
+    }
 }
 
 // Removes what the plan put in the work folder, and the folder when nothing else is left.
@@ -108,6 +126,10 @@ int farm(const FarmCommand& c, SourceManager& sources) {
         interpret_frame(o, plan_frames(o).front(), sources, quiet, render::make_object_queries());
     s.radiosity = scene.globals.radiosity.has_value();
     const FarmPlan plan = plan_farm(c.lumen_args, o, s);
+    if (c.print_plan) {
+        print_plan(plan);
+        return 0;
+    }
     std::fprintf(stderr, "lumen farm: %zu parts%s, %s; work folder %s\n", plan.parts.size(),
                  plan.solve ? " after a radiosity solve" : "",
                  c.slurm ? "on Slurm" : ("on this machine, " + std::to_string(c.jobs) + " at a time").c_str(),

@@ -99,6 +99,12 @@ std::string shell_quote(const std::string& text) {
     return q + "'";
 }
 
+std::string command_line(const std::string& program, const std::vector<std::string>& args) {
+    std::string line = shell_quote(program);
+    for (const std::string& a : args) line += " " + shell_quote(a);
+    return line;
+}
+
 std::string tail_of(const std::string& path, int lines) {
     std::ifstream in(path);
     std::deque<std::string> last;

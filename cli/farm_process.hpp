@@ -29,6 +29,8 @@ int exit_status(int wait_status);
 
 // `text` quoted for sh.
 std::string shell_quote(const std::string& text);
+// `program` and `args` as one sh command line.
+std::string command_line(const std::string& program, const std::vector<std::string>& args);
 
 // The last `lines` lines of a file, for a failed run's report.
 std::string tail_of(const std::string& path, int lines = 8);

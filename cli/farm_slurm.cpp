@@ -20,12 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string command_line(const std::string& program, const std::vector<std::string>& args) {
-    std::string line = shell_quote(program);
-    for (const std::string& a : args) line += " " + shell_quote(a);
-    return line;
-}
-
 std::string script_path(const FarmPlan& plan, const std::string& name) {
     return (fs::path(plan.work) / (name + ".sh")).string();
 }

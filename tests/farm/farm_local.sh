@@ -19,6 +19,11 @@ check one_thread.png single.png
 "$lumen" farm --jobs=2 --parts=6 "${still[@]}" +Ofarmed.png
 check farmed.png single.png
 [ ! -e farmed.farm ] || { echo "FAIL: the work folder was left behind" >&2; exit 1; }
+# The plan printed as a script gives the same file.
+"$lumen" farm --plan --parts=4 "${still[@]}" +Oscripted.png > plan.sh
+[ ! -e scripted.farm ] || { echo "FAIL: --plan ran something" >&2; exit 1; }
+sh plan.sh 2> /dev/null
+check scripted.png single.png
 
 anim=(room.pov +W48 +H36 +KFI1 +KFF4 +KI0 +KF0.6)
 mkdir single farmed
