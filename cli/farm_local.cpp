@@ -77,6 +77,8 @@ void run_all(const std::vector<const FarmRun*>& runs,
 
 }  // namespace
 
+std::string part_name(size_t index) { return "part-" + std::to_string(index); }
+
 std::string log_path(const FarmPlan& plan, const std::string& name) {
     return (std::filesystem::path(plan.work) / "logs" / (name + ".log")).string();
 }
@@ -111,7 +113,7 @@ void run_local(const FarmPlan& plan, int jobs) {
     std::vector<std::string> logs;
     for (size_t i = 0; i < plan.parts.size(); ++i) {
         runs.push_back(&plan.parts[i]);
-        logs.push_back(log_path(plan, "part-" + std::to_string(i)));
+        logs.push_back(log_path(plan, part_name(i)));
     }
     run_all(runs, logs, std::max(1, jobs), "parts");
     finish_plan(plan);

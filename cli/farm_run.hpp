@@ -30,5 +30,7 @@ void finish_plan(const FarmPlan& plan);
 // The folders a plan writes into (parts, logs, status), created.
 void prepare_work(const FarmPlan& plan);
 std::string log_path(const FarmPlan& plan, const std::string& name);  // work/logs/name.log
+// Part `index`'s name in logs and exit statuses ("part-3": Slurm's part-%a).
+std::string part_name(size_t index);
 
 }  // namespace lumen::cli

@@ -14,6 +14,7 @@
 #include "base/stop_request.hpp"
 #include "cli/farm_process.hpp"
 #include "cli/farm_run.hpp"
+#include "cli/text.hpp"
 
 namespace lumen::cli {
 namespace {
@@ -140,16 +141,11 @@ QueueState poll(const std::vector<std::string>& ids, const std::string& array_id
     return q;
 }
 
-std::string lowercase(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 std::string status_text(const QueueState& q, const std::string& solve, const std::string& finish) {
     std::string text = "lumen farm:";
     auto job = [&](const std::string& id) {
         const auto it = q.jobs.find(id);
-        return it == q.jobs.end() ? std::string("gone") : lowercase(it->second);
+        return it == q.jobs.end() ? std::string("gone") : lower(it->second);
     };
     if (!solve.empty()) text += " solve " + job(solve) + ";";
     text += " parts";
@@ -158,10 +154,10 @@ std::string status_text(const QueueState& q, const std::string& solve, const std
     static const char* kOrder[] = {"COMPLETED", "RUNNING", "PENDING"};
     for (const char* state : kOrder)
         if (const auto it = q.parts.find(state); it != q.parts.end())
-            text += " " + std::to_string(it->second) + " " + lowercase(state);
+            text += " " + std::to_string(it->second) + " " + lower(state);
     for (const auto& [state, n] : q.parts)
         if (std::find(std::begin(kOrder), std::end(kOrder), state) == std::end(kOrder))
-            text += " " + std::to_string(n) + " " + lowercase(state);
+            text += " " + std::to_string(n) + " " + lower(state);
     return text + "; " + (finish.empty() ? "" : "finish " + job(finish));
 }
 
@@ -241,10 +237,10 @@ void run_slurm(const FarmPlan& plan, const SlurmSettings& s) {
     if (plan.solve && recorded_status(plan, "solve") != 0)
         job_failed("the radiosity solve", log_path(plan, "solve"));
     for (size_t i = 0; i < plan.parts.size(); ++i) {
-        const std::string name = "part-" + std::to_string(i);
+        const std::string name = part_name(i);
         if (recorded_status(plan, name) > 0) job_failed(plan.parts[i].label, log_path(plan, name));
     }
-    job_failed("the finishing job (" + (finish_state.empty() ? std::string("state unknown") : lowercase(finish_state)) + ")",
+    job_failed("the finishing job (" + (finish_state.empty() ? std::string("state unknown") : lower(finish_state)) + ")",
                log_path(plan, "finish"));
 }
 

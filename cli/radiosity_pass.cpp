@@ -18,6 +18,11 @@ namespace rad = render::radiosity;
 
 namespace {
 
+int render_threads(const render::RenderOptions& render) {
+    return render.threads > 0 ? render.threads
+                              : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 std::string seconds(double s) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.2f s", s);
@@ -42,7 +47,7 @@ const render::IndirectLight* RadiosityPass::prepare(const scene::Scene& scene,
 }
 
 bool RadiosityPass::solve(const render::RenderFrame& frame, const rad::RadiosityOptions& options,
-                          int threads, std::vector<std::string>& log) {
+                          const render::RenderOptions& render, std::vector<std::string>& log) {
     const scene::Scene& scene = frame.scene();
     display_.reset();
     receivers_.reset();
@@ -71,7 +76,7 @@ bool RadiosityPass::solve(const render::RenderFrame& frame, const rad::Radiosity
         loaded_from_ = stored;
     } else {
         info_ = {};
-        solution_ = rad::solve_scene(frame, *mesh_, options, threads, info_);
+        solution_ = rad::solve_scene(frame, *mesh_, options, render_threads(render), info_);
         solution_->scene_key = key;
         for (const std::string& w : info_.warnings) log.push_back(w);
         if (options.to_file && !options.file.empty()) rad::save_solution(*solution_, options.file);
@@ -95,11 +100,10 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
                                                     const rad::RadiosityOptions& options,
                                                     const render::RenderOptions& render,
                                                     std::vector<std::string>& log) {
+    if (!solve(frame, options, render, log)) return nullptr;
     const scene::Scene& scene = frame.scene();
     const render::Geometry& geometry = frame.geometry();
-    const int threads = render.threads > 0 ? render.threads
-                                           : int(std::max(1u, std::thread::hardware_concurrency()));
-    if (!solve(frame, options, threads, log)) return nullptr;
+    const int threads = render_threads(render);
 
     const rad::DisplaySettings ds = rad::display_settings(scene, options);
     points_ = std::make_unique<rad::PointGather>(frame, *mesh_, &solution_->B,

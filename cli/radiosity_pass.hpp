@@ -41,8 +41,8 @@ public:
     // The view-independent part of prepare() alone: meshes the scene and loads, reuses or
     // solves (and saves) its patch solution. Returns false when the scene has no radiosity.
     bool solve(const render::RenderFrame& frame,
-               const render::radiosity::RadiosityOptions& options, int threads,
-               std::vector<std::string>& log);
+               const render::radiosity::RadiosityOptions& options,
+               const render::RenderOptions& render, std::vector<std::string>& log);
     // Where Radiosity_Store keeps the solution of scene key `key`.
     static std::string store_path(const std::string& folder, uint64_t key);
 

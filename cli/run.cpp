@@ -101,10 +101,7 @@ void solve_radiosity(const Options& o, const Frame& frame, const scene::Scene& s
     const auto start = Clock::now();
     const render::RenderFrame compiled(scene);
     std::vector<std::string> log;
-    const int threads = effective_render_options(o).threads;
-    const bool solved = radiosity.solve(
-        compiled, o.radiosity, threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency())),
-        log);
+    const bool solved = radiosity.solve(compiled, o.radiosity, effective_render_options(o), log);
     for (const std::string& line : log) std::fprintf(stderr, "%s\n", line.c_str());
     std::fprintf(stderr, "lumen: %s%s: %s in %s\n", o.input.c_str(),
                  frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",

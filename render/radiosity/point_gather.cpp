@@ -43,7 +43,8 @@ glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, Threa
     t_block_caches = &caches;
     const size_t before = caches.front()->size();
     const glm::dvec3 g = incident_in(caches, p, n, 1);
-    block_records_ += caches.front()->size() - before;
+    // Counted only when a gather added a record: most calls are lookups, on every thread.
+    if (const size_t added = caches.front()->size() - before) block_records_ += added;
     t_block_caches = outer;
     return g;
 }
