@@ -5,16 +5,26 @@
 
 namespace lumen::image {
 
-float Decode::apply(float v) const {
+namespace {
+
+float decoded(Decode::Kind kind, double gamma, float v) {
     switch (kind) {
-        case Kind::Raw: return v;
-        case Kind::Power: return v > 0 ? float(std::pow(double(v), gamma)) : v;
-        case Kind::SRGB: {
+        case Decode::Kind::Raw: return v;
+        case Decode::Kind::Power: return v > 0 ? float(std::pow(double(v), gamma)) : v;
+        case Decode::Kind::SRGB: {
             const double d = v;
             return float(d <= 0.04045 ? d / 12.92 : std::pow((d + 0.055) / 1.055, 2.4));
         }
     }
     return v;
+}
+
+}  // namespace
+
+float Decode::apply(float v) const {
+    const float d = decoded(kind, gamma, v);
+    if (working_gamma == 1 || !(d > 0)) return d;
+    return float(std::pow(double(d), 1.0 / working_gamma));
 }
 
 Decode default_decode(const ImageFile& file, Format format) {

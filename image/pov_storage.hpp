@@ -11,10 +11,12 @@
 
 namespace lumen::image {
 
-// How stored levels become values: raw, v^gamma, or the sRGB curve.
+// How stored levels become values: raw, v^gamma, or the sRGB curve; then, in a scene whose
+// working gamma W is not 1 (assumed_gamma), encoded for it as v^(1/W).
 struct Decode {
     enum class Kind { Raw, Power, SRGB } kind = Kind::Raw;
     double gamma = 1;
+    double working_gamma = 1;
     float apply(float v) const;
 };
 

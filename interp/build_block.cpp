@@ -26,12 +26,13 @@ const std::vector<std::string> kData = {
     "slope_map",         // read by its normal (build_normal.cpp)
     "mesh_camera",       // read by its camera (build_camera.cpp)
     "tiles",             // read by its texture (build_texture.cpp)
+    "image_map", "image_pattern", "bump_map", "material_map",  // build_image_map.cpp
     "contained_by"};     // read by its isosurface (build_isosurface.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "media", "photons",
-    "subsurface", "image_map", "bump_map", "material_map", "image_pattern",
+    "subsurface",
     "density", "density_map", "density_file", "spline",
     "function", "rainbow"});
 

@@ -41,11 +41,16 @@ glm::dvec2 read_vector2(ItemCursor& cur, const std::string& after);
 
 // ---- patterns (build_pattern.cpp) -----------------------------------------------------------
 // If `kw` (already consumed) is a pattern type or pattern modifier, reads its arguments into
-// `pattern` and returns true. `owner` is "normal" in normals, whose kinds render as normals
-// (scene/normal_forms.hpp) and are reported as "normal 'bumps'"; "" for pigments and textures
-// ("pattern 'bozo'").
+// `pattern` and returns true. `owner` is "pigment", "normal" or "texture": kinds in normals
+// render as normals (scene/normal_forms.hpp) and are reported as "normal 'bumps'", the others
+// as "pattern 'bozo'".
 bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& pattern,
                           const std::string& owner);
+// image_map { }, image_pattern { }, bump_map { } or material_map { } (build_image_map.cpp):
+// reads the image and its modifiers into `pattern`'s kind and returns true; a located error
+// where the block does not belong to `owner`. material_map's textures go to `textures`.
+bool read_image_block(ItemCursor& cur, const Item& kw, scene::Pattern& pattern,
+                      const std::string& owner, std::vector<scene::LayeredTexture>* textures);
 // How many list entries `checker A, B` style patterns take (0 = no list form).
 int pattern_list_size(scene::PatternType type);
 // True for the pattern words that may be followed by a list (`checker A, B`).

@@ -78,7 +78,7 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& g) {
             double gamma = 2.2;  // `assumed_gamma srgb`
             if (!cur.accept_keyword("srgb")) gamma = cur.expect_float(w);
             if (g.assumed_gamma) cur.warn(item.loc, "assumed_gamma given twice: the first counts");
-            else g.assumed_gamma = gamma;
+            else g.assumed_gamma = cur.ctx().assumed_gamma = gamma;
         } else if (w == "max_trace_level") {
             g.max_trace_level = std::clamp(cur.expect_int(w), 1, 256);
         } else if (w == "adc_bailout") g.adc_bailout = cur.expect_float(w);

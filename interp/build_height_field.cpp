@@ -4,11 +4,11 @@
 // evaluating a float expression (pigment functions are not supported).
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "image/image_file.hpp"
 #include "image/pov_storage.hpp"
 #include "interp/build_common.hpp"
+#include "interp/image_spec.hpp"
 #include "parser/ast.hpp"
 
 namespace lumen::interp {
@@ -47,28 +47,6 @@ uint64_t hash_heights(const std::vector<uint16_t>& h) {
         v = (v ^ (x >> 8)) * 1099511628211ULL;
     }
     return v;
-}
-
-// `gamma G` / `gamma srgb` and `premultiplied B` after the file name. Height fields use the
-// raw values unless a gamma is given; premultiplied alpha does not change heights.
-image::Decode read_file_modifiers(ItemCursor& cur) {
-    image::Decode decode;
-    for (;;) {
-        if (cur.accept_keyword("gamma")) {
-            if (cur.accept_keyword("srgb")) {
-                decode = {image::Decode::Kind::SRGB, 1};
-                continue;
-            }
-            const SourceLoc loc = cur.next_loc();
-            const double g = cur.expect_float("gamma");
-            if (!(g > 0)) cur.fail(loc, "the image gamma must be positive");
-            decode = {image::Decode::Kind::Power, g};
-        } else if (cur.accept_keyword("premultiplied")) {
-            cur.optional_bool();
-        } else {
-            return decode;
-        }
-    }
 }
 
 // The field of a stored image, with its options and the object modifiers that follow.
@@ -159,36 +137,17 @@ scene::ObjectPtr build_height_field(ItemCursor& cur) {
         cur.warn(cur.peek().loc, "the vector before a height_field's image is ignored");
         cur.expect_vecn("");
     }
-    std::optional<image::Format> format;
-    SourceLoc loc = cur.next_loc();
-    if (!cur.at_end() && cur.peek().kind == Item::Kind::Keyword) {
-        format = image::format_from_keyword(cur.peek().keyword);
-        if (format) cur.next();
-    }
-    if (format && !cur.at_end()) loc = cur.peek().loc;  // errors point at the file name
-    const std::string name = cur.expect_string(format ? image::format_keyword(*format) : "height_field");
-    if (!format) {
-        format = image::format_from_extension(name);
-        if (!format && name.find('.') == std::string::npos) format = image::Format::Png;  // the +F default
-        if (!format) cur.fail(loc, "cannot tell the image type of '" + name + "' from its extension");
-    }
-    if (*format == image::Format::Iff) cur.fail(loc, "iff images cannot make a height_field");
+    const ImageName name = read_image_name(cur, "height_field");
+    if (name.format == image::Format::Iff) cur.fail(name.loc, "iff images cannot make a height_field");
     // Their heights are palette indices, which the OpenImageIO reader does not give.
-    if (*format == image::Format::Gif || *format == image::Format::Pot)
-        return unsupported_object({std::string("height_field ") + image::format_keyword(*format), loc});
-    const image::Decode decode = read_file_modifiers(cur);
-    const std::string path = FileResolver(cur.ctx().search_path).find(name, FileResolver::Kind::Image);
-    if (path.empty()) cur.fail(loc, "cannot find image file '" + name + "'");
-    image::ImageFile file;
-    try {
-        file = image::read_image(path, *format);
-    } catch (const image::ImageError& e) {
-        cur.fail(loc, "cannot read image '" + name + "': " + e.what());
-    }
+    if (name.format == image::Format::Gif || name.format == image::Format::Pot)
+        return unsupported_object({std::string("height_field ") + image::format_keyword(name.format), name.loc});
+    // Height fields use the raw values unless a gamma is given.
+    const image::Decode decode = read_image_gamma(cur).value_or(image::Decode{});
+    const image::ImageFile file = load_image(cur, name).file;
     if (file.width < 2 || file.height < 2)
-        cur.fail(loc, "a height_field image needs at least 2 x 2 pixels");
-
-    return field_object(cur, block, image::store_as_pov(file, *format, decode));
+        cur.fail(name.loc, "a height_field image needs at least 2 x 2 pixels");
+    return field_object(cur, block, image::store_as_pov(file, name.format, decode));
 }
 
 }  // namespace lumen::interp

@@ -75,6 +75,9 @@ scene::NormalPtr build_normal(ItemCursor& cur, const scene::Normal* base) {
             }
         }
         if (read_pattern_keyword(cur, item, n.pattern, "normal")) {
+            if (const auto* bump = std::get_if<scene::pattern::BumpMap>(&n.pattern.kind);
+                bump && bump->bump_size_given && block_of(item, "bump_map"))
+                n.amount = as_float(bump->bump_size);
             if (const BlockValue* b = block_of(item, "object")) {
                 ObjectEntries list(cur, *b);  // `object { OBJ normal { A }, normal { B } }`
                 scene::NormalMap entries;

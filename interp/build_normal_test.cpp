@@ -91,9 +91,9 @@ TEST_F(BuildNormal, SlopeMapAndNormalMapReplaceEachOther) {
 TEST_F(BuildNormal, UnrenderedEntriesAreReported) {
     const scene::Scene s = run(
         "sphere { 0, 1 normal { gradient x normal_map { [0 gradient y] "
-        "[1 image_pattern { png \"a.png\" }] } } }");
+        "[1 pigment_pattern { facets }] } } }");
     ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "image_pattern");
+    EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
     EXPECT_TRUE(run("sphere { 0, 1 normal { checker normal { quilted } normal { onion } } }")
                     .unsupported.empty());
 }

@@ -34,7 +34,7 @@ void set_kind(scene::Pattern& pattern, scene::PatternKind kind, const std::strin
     const bool rendered =
         owner == "normal" ? scene::normal_rendered(type) : scene::pattern_info(type).rendered;
     if (!rendered)
-        mark_unsupported(pattern, (owner.empty() ? "pattern" : owner) + " '" + word + "'", loc);
+        mark_unsupported(pattern, (owner == "normal" ? "normal" : "pattern") + std::string(" '") + word + "'", loc);
 }
 
 // turbulence, octaves, omega, lambda: the classic turbulence (scene/pattern_steps.hpp).
@@ -148,8 +148,9 @@ bool read_pattern_keyword(ItemCursor& cur, const Item& kw, scene::Pattern& patte
         set_kind(pattern, std::move(k), "slope", owner, kw.loc);
         return true;
     }
+    if (read_image_block(cur, kw, pattern, owner, nullptr)) return true;
     if (kw.kind == Item::Kind::Value && kw.value.is<scene::Unsupported>()) {
-        // image_map { }, bump_map { }, slope { }, ...
+        // density { }, ...
         mark_unsupported(pattern, kw.value.as<scene::Unsupported>().feature, kw.loc);
         return true;
     }

@@ -279,16 +279,16 @@ TEST_F(BuildPattern, NormalModifiersAreKept) {
     EXPECT_EQ(t.normal->normal_map[1].item->pattern.type(), scene::PatternType::Dents);
 }
 
-// Blocks lumen does not build (image_map, ...) mark the pattern they stand in; the pattern
-// blocks it builds (slope { }, pigment_pattern { }) report what they hold.
-TEST_F(BuildPattern, UnbuiltBlocksMarkThePattern) {
+// Kinds lumen does not render (facets in a pigment) mark the pattern they stand in; the
+// pattern blocks it builds (slope { }, pigment_pattern { }) report what they hold.
+TEST_F(BuildPattern, UnrenderedKindsMarkThePattern) {
     const scene::Scene s = run(
-        "sphere { 0, 1 pigment { image_map { png \"a.png\" } } }\n"
+        "sphere { 0, 1 pigment { facets } }\n"
         "sphere { 0, 1 texture { slope { -z altitude z } texture_map { [0 pigment { rgb 1 }] } } }\n"
-        "sphere { 0, 1 pigment { pigment_pattern { image_map { png \"a.png\" } } } }");
+        "sphere { 0, 1 pigment { pigment_pattern { facets } } }");
     ASSERT_EQ(s.unsupported.size(), 2u);
-    EXPECT_EQ(s.unsupported[0].feature, "image_map");
-    EXPECT_EQ(s.unsupported[1].feature, "image_map");
+    EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
+    EXPECT_EQ(s.unsupported[1].feature, "pattern 'facets'");
     EXPECT_EQ(s.unsupported[1].loc.line, 3u);
 }
 

@@ -102,7 +102,7 @@ scene::PigmentPtr build_pigment(ItemCursor& cur, const scene::Pigment* base) {
                 continue;
             }
         }
-        if (read_pattern_keyword(cur, item, p.pattern, "")) {
+        if (read_pattern_keyword(cur, item, p.pattern, "pigment")) {
             if (is_list_pattern_word(item)) read_list_form(cur, p);
             if (const BlockValue* b = block_of(item, "object")) {
                 ObjectEntries list(cur, *b);

@@ -76,13 +76,13 @@ TEST_F(BuildScene, SkySphere) {
 
 TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
     scene::Scene s = run(
-        "#declare P = pigment { image_map { png \"a.png\" } }\n"
+        "#declare P = pigment { facets }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 interior { media { } } }\n"
         "lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
-    EXPECT_EQ(s.unsupported[0].feature, "image_map");
+    EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
     EXPECT_EQ(s.unsupported[1].feature, "media");
     EXPECT_EQ(s.unsupported[2].feature, "lemon");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);

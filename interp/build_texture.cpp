@@ -107,14 +107,23 @@ scene::LayeredTexture build_texture(ItemCursor& cur) {
             checker.kind = Item::Kind::Keyword;
             checker.keyword = "checker";
             checker.loc = b->loc;
-            read_pattern_keyword(tiles, checker, top.pattern, "");
+            read_pattern_keyword(tiles, checker, top.pattern, "texture");
             read_list_form(tiles, top);
             if (!tiles.at_end()) tiles.fail_unexpected(tiles.next(), {"texture", "tile2"});
             if (top.texture_map.size() == 2)
                 std::swap(top.texture_map[0].item, top.texture_map[1].item);
             continue;
         }
-        if (read_pattern_keyword(cur, item, top.pattern, "")) {
+        std::vector<scene::LayeredTexture> materials;
+        if (read_image_block(cur, item, top.pattern, "texture", &materials)) {
+            // material_map: its textures are the entries 0, 1, ... the pixel's index picks.
+            top.texture_map.clear();
+            for (size_t i = 0; i < materials.size(); ++i)
+                top.texture_map.push_back({double(i), std::move(materials[i])});
+            top.list_form = true;
+            continue;
+        }
+        if (read_pattern_keyword(cur, item, top.pattern, "texture")) {
             if (is_list_pattern_word(item)) read_list_form(cur, top);
             if (const BlockValue* b = block_of(item, "object")) {
                 ObjectEntries list(cur, *b);

@@ -9,6 +9,7 @@
 #include "noise/waveforms.hpp"
 #include "render/pattern_kinds.hpp"
 #include "render/patterns/fractals.hpp"
+#include "render/patterns/image_lookup.hpp"
 #include "render/patterns/noise_kinds.hpp"
 #include "render/patterns/pattern_sources.hpp"
 #include "render/patterns/pavement.hpp"

@@ -1,6 +1,7 @@
 #include "render/pigment.hpp"
 
 #include "render/pattern.hpp"
+#include "render/patterns/image_lookup.hpp"
 
 namespace lumen::render {
 
@@ -38,6 +39,8 @@ scene::Colour evaluate_pigment(const scene::Pigment* pigment, const glm::dvec3& 
         pattern_point(pigment->pattern, source_point(pigment->pattern, p, surface));
     if (std::holds_alternative<scene::pattern::Average>(pigment->pattern.kind))
         return average_colour(pigment->pigment_map, tp, surface);
+    if (const auto* image = std::get_if<scene::pattern::ImageMap>(&pigment->pattern.kind))
+        return image_map_colour(*image, tp);
     const double v = pattern_value_at(pigment->pattern, tp, surface);
     if (!pigment->pigment_map.empty()) {
         // pigment_map, or the list form whose entries are indexed 0, 1, 2...: the entries are

@@ -2,6 +2,7 @@
 
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
+#include "scene/image_map.hpp"
 
 namespace lumen::render {
 
@@ -126,6 +127,8 @@ bool colour_passes(const scene::Colour& c) { return c.f != 0 || c.t != 0; }
 bool pigment_may_pass(const scene::Pigment* p) {
     if (!p) return false;  // the default pigment: black
     if (colour_passes(p->colour)) return true;
+    if (const auto* image = std::get_if<scene::pattern::ImageMap>(&p->pattern.kind))
+        if (image->data && image->data->may_pass_light) return true;
     for (const auto& e : p->colour_map)
         if (colour_passes(e.item)) return true;
     for (const auto& e : p->pigment_map)

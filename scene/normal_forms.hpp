@@ -34,6 +34,7 @@ template <> struct NormalForm<pattern::Waves> : DedicatedForm<true> {};
 template <> struct NormalForm<pattern::Quilted> : DedicatedForm<true> {};
 template <> struct NormalForm<pattern::Average> : DedicatedForm<true> {};  // its map, weighted
 template <> struct NormalForm<pattern::Facets> : DedicatedForm<true> {};
+template <> struct NormalForm<pattern::BumpMap> : DedicatedForm<true> {};  // the image's heights
 
 namespace normal_form_detail {
 template <std::size_t... I>

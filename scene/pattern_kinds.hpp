@@ -23,6 +23,7 @@ namespace lumen::scene {
 
 struct Pigment;  // scene/texture.hpp
 struct Object;   // scene/object.hpp
+struct ImageData;  // scene/image_map.hpp
 
 namespace pattern {
 
@@ -225,6 +226,53 @@ struct DensityFile {
     }
 };
 
+// `image_map`, `bump_map`, `material_map` and `image_pattern { [TYPE] "file" modifiers }`:
+// an image wrapped around pattern space (render/patterns/image_lookup.hpp). The pixels are
+// shared; the settings are listed here so that dumps and content hashes see them.
+struct ImageSource {
+    std::shared_ptr<const ImageData> data;  // never null once read
+    std::string file;                       // as found on the search path
+    int map_type = 0;     // 0 planar, 1 spherical, 2 cylindrical, 5 torus (others planar)
+    int interpolate = 0;  // 0 none, 2 bilinear, 3 bicubic, 4 normalised distance
+    bool once = false;    // no tiling: outside the image is off the map
+    bool use_index = false, use_alpha = false;
+    // `filter all F` / `transmit all T` on a true-colour image: added to every pixel.
+    double filter = 0, transmit = 0;
+    // `filter N, F` / `transmit N, T` on a palette image, as (0 filter | 1 transmit, N, value)
+    // triples in the order written; the data holds them applied.
+    std::vector<double> entry_changes;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        f("file", s.file);
+        f("map_type", s.map_type);
+        f("interpolate", s.interpolate);
+        f("once", s.once);
+        f("use_index", s.use_index);
+        f("use_alpha", s.use_alpha);
+        f("filter", s.filter);
+        f("transmit", s.transmit);
+        f("entry_changes", s.entry_changes);
+    }
+};
+struct ImageMap : ImageSource {};      // a pigment: the image's colours
+struct ImagePattern : ImageSource {};  // the image's grey (or alpha) as a pattern value
+// A normal: the image's grey as heights. `bump_size` inside the block sets the normal's amount.
+struct BumpMap : ImageSource {
+    double bump_size = 0.5;
+    bool bump_size_given = false;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        ImageSource::fields(s, f);
+        f("bump_size", s.bump_size);
+    }
+};
+// A texture: the pixel's palette index (or red * 255) picks one of `textures` textures.
+struct MaterialMap : ImageSource {
+    int textures = 0;
+    template <class Self, class F> static void fields(Self& s, F&& f) {
+        ImageSource::fields(s, f);
+        f("textures", s.textures);
+    }
+};
+
 }  // namespace pattern
 
 // X(Kind, keyword, entries, default_map, rendered)
@@ -277,7 +325,11 @@ struct DensityFile {
     X(Function, "function", 0, grey_ramp, true)                 \
     X(PigmentPattern, "pigment_pattern", 0, grey_ramp, true)    \
     X(Object, "object", 2, checker, true)                       \
-    X(DensityFile, "density_file", 0, grey_ramp, true)
+    X(DensityFile, "density_file", 0, grey_ramp, true)          \
+    X(ImageMap, "image_map", 0, grey_ramp, true)                \
+    X(ImagePattern, "image_pattern", 0, grey_ramp, true)        \
+    X(BumpMap, "bump_map", 0, grey_ramp, true)                  \
+    X(MaterialMap, "material_map", 0, grey_ramp, true)
 
 #define LUMEN_PATTERN_ENUM(Kind, ...) Kind,
 enum class PatternType { LUMEN_PATTERN_KINDS(LUMEN_PATTERN_ENUM) };

@@ -30,5 +30,8 @@ void apply_form(const pattern::Quilted& k, const scene::Normal& normal, const gl
 // of POV's vector noise at its cell point that is tangent to the normal.
 void apply_form(const pattern::Facets& k, const scene::Normal& normal, const glm::dvec3& p,
               glm::dvec3& n);
+// bump_map: the image's heights times the amount (render/patterns/bump_map.cpp).
+void apply_form(const pattern::BumpMap& k, const scene::Normal& normal, const glm::dvec3& p,
+                glm::dvec3& n);
 
 }  // namespace lumen::render
