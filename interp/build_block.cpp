@@ -13,7 +13,7 @@ namespace {
 const std::vector<std::string> kBuilt = scene::keywords_then(scene::kShapeKeywords, {
     "object", "union", "merge", "intersection", "difference", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
     "light_source", "transform", "color_map", "colour_map", "pigment_map", "texture_map",
-    "normal_map", "fog", "sky_sphere"});
+    "normal_map", "fog", "sky_sphere", "media", "density", "density_map"});
 // Blocks that only mean something inside a parent: returned as BlockValue.
 const std::vector<std::string> kData = {
     "reflection", "irid", "radiosity", "vertex_vectors", "normal_vectors", "uv_vectors",
@@ -27,13 +27,14 @@ const std::vector<std::string> kData = {
     "mesh_camera",       // read by its camera (build_camera.cpp)
     "tiles",             // read by its texture (build_texture.cpp)
     "image_map", "image_pattern", "bump_map", "material_map",  // build_image_map.cpp
-    "contained_by"};     // read by its isosurface (build_isosurface.cpp)
+    "contained_by",      // read by its isosurface (build_isosurface.cpp)
+    "scattering"};       // read by its media (build_media.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
-    "media", "photons",
+    "photons",
     "subsurface",
-    "density", "density_map", "density_file", "spline",
+    "density_file", "spline",
     "function", "rainbow"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -77,7 +78,9 @@ void collect(const scene::ObjectPtr& o, std::vector<scene::Unsupported>& out) {
     out.insert(out.end(), o->unsupported.begin(), o->unsupported.end());
     collect(o->texture, out);
     collect(o->interior_texture, out);
-    if (o->interior && o->interior->media) out.push_back(*o->interior->media);
+    if (o->interior)
+        for (const auto& m : o->interior->media)
+            for (const auto& d : m->densities) collect(d, out);
     if (const auto* mesh = std::get_if<scene::Mesh>(&o->shape))
         for (const auto& t : mesh->textures) collect(t, out);
     if (const auto* csg = std::get_if<scene::Csg>(&o->shape))
@@ -160,6 +163,9 @@ Value build_block(BuildContext& ctx, const BlockValue& block) {
     if (k == "texture_map") return make(TextureMapValue{build_texture_map(cur)}, loc);
     if (k == "normal_map") return make(NormalMapValue{build_normal_map(cur)}, loc);
     if (k == "fog") return make(build_fog(cur), loc);
+    if (k == "media") return Value{build_media(cur), loc};
+    if (k == "density") return Value{build_density(cur), loc};
+    if (k == "density_map") return build_density_map(cur, loc);
     if (k == "sky_sphere") return make(build_sky_sphere(cur), loc);
     if (contains(kBuilt, k)) return Value{build_object(cur), loc};
     throw LumenError(loc, "'" + k + "' is not supported yet");
@@ -190,6 +196,8 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
         scene.lights.push_back(*v.as<std::shared_ptr<const scene::Light>>());
     } else if (v.is<std::shared_ptr<const scene::Fog>>()) {
         scene.fogs.push_back(*v.as<std::shared_ptr<const scene::Fog>>());
+    } else if (v.is<scene::MediaPtr>()) {
+        scene.atmosphere.push_back(v.as<scene::MediaPtr>());
     } else if (v.is<std::shared_ptr<const scene::SkySphere>>()) {
         scene.sky_sphere = *v.as<std::shared_ptr<const scene::SkySphere>>();
     } else if (v.is<scene::Unsupported>()) {
@@ -249,6 +257,8 @@ void finish_scene(BuildContext& ctx, scene::Scene& scene) {
     }
     for (const auto& f : scene.fogs)
         if (f.unsupported) out.push_back(*f.unsupported);
+    for (const auto& m : scene.atmosphere)
+        for (const auto& d : m->densities) collect(d, out);
     if (scene.sky_sphere)
         for (const auto& p : scene.sky_sphere->pigments) collect(p, out);
     out.insert(out.end(), scene.globals.unsupported.begin(), scene.globals.unsupported.end());

@@ -187,6 +187,15 @@ void transform_light(scene::Light& light, const scene::Transform& t);
 void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
                         std::vector<scene::Light>& out);
 scene::Fog build_fog(ItemCursor& cur);
+// media { } and density { } (build_media.cpp). A density is a pigment whose colour scales the
+// media's coefficients.
+scene::MediaPtr build_media(ItemCursor& cur);
+scene::PigmentPtr build_density(ItemCursor& cur);
+// density_map { [v colour | density] ... }: a colour_map, or a pigment_map where an entry is a
+// density (build_maps.cpp).
+Value build_density_map(ItemCursor& cur, SourceLoc loc);
+// The media with its densities moved by t (an object's or interior's transform).
+scene::MediaPtr transformed(const scene::MediaPtr& media, const scene::Transform& t);
 scene::SkySphere build_sky_sphere(ItemCursor& cur);
 scene::Colour build_background(ItemCursor& cur);
 void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& globals);

@@ -13,8 +13,13 @@ scene::Interior build_interior(ItemCursor& cur) {
     in.loc = cur.block_loc();
     while (!cur.at_end()) {
         const Item& item = cur.next();
-        if (item.kind == Item::Kind::Value && item.value.is<scene::Unsupported>()) {
-            if (!in.media) in.media = item.value.as<scene::Unsupported>();  // media { }
+        if (item.kind == Item::Kind::Value && item.value.is<scene::MediaPtr>()) {
+            in.media.push_back(item.value.as<scene::MediaPtr>());
+            continue;
+        }
+        scene::Transform t;
+        if (read_transform(cur, item, t)) {  // moves the media's densities
+            for (auto& m : in.media) m = transformed(m, t);
             continue;
         }
         if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, keywords);

@@ -58,6 +58,26 @@ scene::PigmentMap build_pigment_map(ItemCursor& cur) {
     return out;
 }
 
+Value build_density_map(ItemCursor& cur, SourceLoc loc) {
+    // Entries are colours or densities: a map of colours is a colour_map, any density makes
+    // it a map of densities (a pigment_map), the colours becoming solid ones.
+    scene::PigmentMap out;
+    bool colours = true;
+    read_entries<PigmentMapValue>(cur, out, false, [&](double v, ItemCursor& e, const Item&) {
+        if (e.next_is<scene::PigmentPtr>()) {
+            out.push_back({v, e.next().value.as<scene::PigmentPtr>()});
+            colours = false;
+            return;
+        }
+        const SourceLoc at = e.next_loc();
+        out.push_back({v, solid_pigment(e.expect_colour(""), at)});
+    });
+    if (!colours) return Value{std::make_shared<const PigmentMapValue>(PigmentMapValue{out}), loc};
+    ColourMapValue map;
+    for (const auto& entry : out) map.entries.push_back({entry.value, entry.item->colour});
+    return Value{std::make_shared<const ColourMapValue>(map), loc};
+}
+
 scene::TextureMap build_texture_map(ItemCursor& cur) {
     scene::TextureMap out;
     read_entries<TextureMapValue>(cur, out, true, [&](double v, ItemCursor& e, const Item&) {

@@ -195,10 +195,11 @@ TEST_F(BuildMaterial, InteriorAndMaterial) {
     EXPECT_EQ(m->interior_texture.size(), 1u);
 }
 
-TEST_F(BuildMaterial, MediaIsUnsupported) {
-    scene::Scene s = run("sphere { 0, 1 hollow interior { media { emission 1 } } }");
-    ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "media");
+TEST_F(BuildMaterial, InteriorKeepsItsMedia) {
+    scene::Scene s = run("sphere { 0, 1 hollow material { interior { media { emission 1 } media { } } } }");
+    EXPECT_TRUE(s.unsupported.empty());
+    ASSERT_TRUE(s.objects.at(0)->interior);
+    EXPECT_EQ(s.objects.at(0)->interior->media.size(), 2u);
 }
 
 TEST_F(BuildMaterial, DefaultFinishApplies) {

@@ -26,6 +26,8 @@ const std::vector<std::string>& modifier_keywords() {
 
 void transform_attachments(scene::Object& obj, const scene::Transform& t) {
     obj.texture = transformed(obj.texture, t);
+    if (obj.interior)
+        for (auto& m : obj.interior->media) m = transformed(m, t);
     obj.interior_texture = transformed(obj.interior_texture, t);
     for (auto& c : obj.clipped_by) c = transformed(c, t);
     for (auto& b : obj.bounded_by) b = transformed(b, t);

@@ -79,11 +79,11 @@ TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
         "#declare P = pigment { facets }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
-        "sphere { 0, 1 interior { media { } } }\n"
+        "sphere { 0, 1 photons { target } }\n"
         "lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
     EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
-    EXPECT_EQ(s.unsupported[1].feature, "media");
+    EXPECT_EQ(s.unsupported[1].feature, "photons");
     EXPECT_EQ(s.unsupported[2].feature, "lemon");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);
 }

@@ -174,7 +174,7 @@ Json interior(const scene::Interior& in) {
     put_if(o, "fade_distance", in.fade_distance, d.fade_distance);
     put_if(o, "fade_power", in.fade_power, d.fade_power);
     put_if(o, "fade_colour", in.fade_colour, d.fade_colour);
-    if (in.media) o.put("media", unsupported_text(*in.media));
+    if (!in.media.empty()) o.put("media", Json::num(double(in.media.size())));
     return o;
 }
 

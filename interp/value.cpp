@@ -9,7 +9,8 @@ constexpr const char* kTypeNames[] = {
     "empty value", "float",       "vector",      "colour",       "string",     "array",
     "block",       "object",      "texture",     "pigment",      "finish",     "normal",
     "interior",    "material",    "camera",      "light_source", "transform",  "color_map",
-    "pigment_map", "texture_map", "normal_map",  "fog",          "sky_sphere", "macro",
+    "pigment_map", "texture_map", "normal_map",  "fog",          "media",      "sky_sphere",
+    "macro",
     "function",    "file",        "unsupported feature",
 };
 static_assert(std::size(kTypeNames) == std::variant_size_v<Value::Variant>);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/fog.hpp"
+#include "render/media.hpp"
 #include "render/shadows.hpp"
 #include "render/texture_layers.hpp"
 
@@ -122,6 +123,9 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
                       const LightingEnv& env, const InteriorList& interiors, ThreadState& state) {
     glm::dvec3 filter;
     const bool fog = fog_dims(l, env);
+    // Atmospheric media dims it likewise (object media always do: render/shadows.cpp).
+    const bool media = l.light && l.light->media_attenuation && l.light->media_interaction &&
+                       env.atmosphere && !env.atmosphere->empty();
     double solid = 0;  // the way inside solid objects, where there is no fog
     if (l.shadowless) {
         filter = glm::dvec3(projection_reach(l, s.point, ls.dir, ls.distance).has_value());
@@ -133,8 +137,10 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
         const std::optional<double> reach = projection_reach(l, s.point, ls.dir, ls.distance);
         if (!reach) return glm::dvec3(0);
         filter = shadow_filter(*env.geometry, s.point, ls.dir, *reach, interiors, state.counters,
-                               fog ? &solid : nullptr);
+                               fog || media ? &solid : nullptr);
     }
+    if (media && solid < ls.distance && filter != glm::dvec3(0))
+        filter *= media_transmittance(*env.atmosphere, Ray{s.point, ls.dir}, ls.distance - solid);
     if (fog && solid < ls.distance)
         filter *= fog_along(*env.fogs, Ray{s.point, ls.dir}, ls.distance - solid,
                             env.noise_generator).attenuation;

@@ -36,6 +36,7 @@ struct LightingEnv {
     glm::dvec3 ambient_light{1};
     glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};  // global_settings irid_wavelength
     const std::vector<scene::Fog>* fogs = nullptr;  // dims lights with media_attenuation
+    const std::vector<const scene::Media*>* atmosphere = nullptr;  // likewise
     // global_settings noise_generator: fog and irid turbulence.
     noise::Generator noise_generator = noise::Generator::RangeCorrected;
     bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/media.hpp"
 #include "render/normal.hpp"
 #include "render/texture_layers.hpp"
 
@@ -42,7 +43,7 @@ glm::dvec3 caustic_normal(const Hit& hit, const glm::dvec3& dir) {
 }  // namespace
 
 bool clear_for_shadows(const scene::Interior* in) {
-    return !in || (in->caustics == 0 && !fades(*in, true));
+    return !in || (in->caustics == 0 && !fades(*in, true) && in->media.empty());
 }
 
 glm::dvec3 interior_fade(const scene::Interior& in, double depth, bool shadow_ray) {
@@ -62,9 +63,10 @@ namespace {
 // stepped over that surface).
 class ShadowWalk {
 public:
-    ShadowWalk(const glm::dvec3& dir, double distance, const InteriorList& interiors,
-               TraceCounters& counters, const Intersector* skipping_clear)
-        : dir_(dir), remaining_(distance), inside_(interiors), counters_(counters),
+    ShadowWalk(const glm::dvec3& point, const glm::dvec3& dir, double distance,
+               const InteriorList& interiors, TraceCounters& counters,
+               const Intersector* skipping_clear)
+        : origin_(point), dir_(dir), remaining_(distance), inside_(interiors), counters_(counters),
           skipping_clear_(skipping_clear) {}
 
     // Starts the next query; false where POV's loop ends instead (the rest of the way is
@@ -94,11 +96,17 @@ public:
                                     45 * hit.interior->caustics);
         const int where = inside_.find(hit.interior_id);
         if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
+        pass_media(depth);
         if (inside_.in_solid()) solid_length_ += depth;
         inside_.toggle(hit.interior_id, hit.interior, hit.hollow);
         remaining_ -= depth;
         ++crossings_;
         return true;
+    }
+    // The rest of the way to the light: the media of the interiors still around the ray (the
+    // light's own container) dim it too.
+    void finish() {
+        if (!is_black(filter_) && remaining_ > 0) pass_media(remaining_);
     }
     const glm::dvec3& filter() const { return filter_; }
     // The way inside solid objects, including the rest of it to the light.
@@ -108,6 +116,25 @@ public:
     bool gave_up() const { return gave_up_; }
 
 private:
+    // Object media dim a shadow ray over each stretch it spends in their containers (not
+    // inside a solid object, where POV-Ray has no media).
+    void pass_media(double depth) {
+        if (inside_.empty() || inside_.in_solid()) {
+            travelled_ += depth;
+            return;
+        }
+        media_.clear();
+        for (int i = 0; i < inside_.size(); ++i)
+            if (const scene::Interior* in = inside_[i].interior)
+                for (const auto& m : in->media) media_.push_back(m.get());
+        if (!media_.empty())
+            filter_ *= media_transmittance(media_, Ray{origin_ + travelled_ * dir_, dir_}, depth);
+        travelled_ += depth;
+    }
+
+    glm::dvec3 origin_;
+    double travelled_ = 0;
+    std::vector<const scene::Media*> media_;
     glm::dvec3 dir_;
     double remaining_;
     InteriorList inside_;
@@ -171,11 +198,14 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
     // Most shadow rays never come near a clear object's surface: skipping those objects spares
     // their intersections and textures.
     if (geometry.has_clear_objects() && !solid_length) {
-        ShadowWalk skipping(dir, distance, interiors, counters, &geometry);
+        ShadowWalk skipping(point, dir, distance, interiors, counters, &geometry);
         step_through(geometry, Query::ShadowSkipClear, point, skipping);
-        if (!skipping.gave_up()) return skipping.filter();
+        if (!skipping.gave_up()) {
+            skipping.finish();
+            return skipping.filter();
+        }
     }
-    ShadowWalk all(dir, distance, interiors, counters, nullptr);
+    ShadowWalk all(point, dir, distance, interiors, counters, nullptr);
     if (!solid_length && geometry.opaque_only(Query::Shadow)) {
         // The walk would stop, black, at its first surface: any surface within its first
         // query's reach decides, and an occlusion test finds one sooner than the nearest.
@@ -186,6 +216,7 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         return all.filter();
     }
     step_through(geometry, Query::Shadow, point, all);
+    all.finish();
     if (solid_length) *solid_length = all.solid_length();
     return all.filter();
 }

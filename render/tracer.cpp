@@ -9,6 +9,7 @@
 #include "base/diagnostics.hpp"
 #include "render/fog.hpp"
 #include "render/frame.hpp"
+#include "render/media.hpp"
 #include "render/normal.hpp"
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
@@ -31,6 +32,20 @@ double max_abs(const glm::dvec3& c) {
 }
 
 double ior_of(const scene::Interior* in) { return in ? in->ior : 1.0; }
+
+bool object_has_media(const scene::Object& o) {
+    if (o.interior && !o.interior->media.empty()) return true;
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const auto& child : csg->children)
+            if (child && object_has_media(*child)) return true;
+    return false;
+}
+
+bool scene_has_interior_media(const scene::Scene& scene) {
+    for (const auto& o : scene.objects)
+        if (o && object_has_media(*o)) return true;
+    return false;
+}
 
 // Where a ray goes when it crosses the surface of `hit`'s object: the new interior list and
 // the ratio of refractive indices.
@@ -83,6 +98,14 @@ struct Tracer::Context {
 Tracer::Tracer(const RenderFrame& frame, const TraceOptions& options)
     : scene_(frame.scene()), geometry_(frame.geometry()), options_(options) {
     init(frame.lights());
+    if (!media_) return;
+    const Geometry& g = frame.geometry();
+    for (size_t i = 0; i < g.placed_objects().size(); ++i) {
+        const scene::Object* o = g.placed_objects()[i].object;
+        if (!o || !g.inside_placed(i, scene_.camera.location)) continue;
+        const scene::Interior* in = o->interior ? &*o->interior : nullptr;
+        camera_interiors_.push(in ? static_cast<const void*>(in) : o, in, o->hollow);
+    }
 }
 
 Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options)
@@ -107,12 +130,14 @@ void Tracer::init(const std::vector<LightSource>& lights) {
     max_level_ = std::clamp(scene.globals.max_trace_level, 1, 256);
     adc_bailout_ = scene.globals.adc_bailout;
     legacy_opacity_ = scene.language_version < 3.7;
+    for (const auto& m : scene.atmosphere) atmosphere_.push_back(m.get());
+    media_ = !atmosphere_.empty() || scene_has_interior_media(scene);
+    env_.atmosphere = &atmosphere_;
 }
 
 RayColour Tracer::trace_primary(const Ray& ray, ThreadState& state) const {
-    InteriorList outside;
     Context ctx;
-    ctx.interiors = &outside;
+    ctx.interiors = &camera_interiors_;
     double depth = 0;
     return trace(ray, ctx, state, &depth);
 }
@@ -151,6 +176,8 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
+    if (media_) apply_media(c, ray, *depth == kMaxDistance ? kMediaEscapeDepth : *depth,
+                            *depth != kMaxDistance, *ctx.interiors, state);
     if (!scene_.fogs.empty()) apply_fog(c, ray, *depth, *ctx.interiors);  // no call per ray without fog
     return c;
 }
@@ -407,6 +434,24 @@ RayColour Tracer::sky(const glm::dvec3& dir) const {
     out.transmit = options_.alpha ? (bg == scene::Colour{} ? 1.0 : bg.t) : 0.0;
     if (scene_.sky_sphere && !scene_.sky_sphere->pigments.empty()) out.transmit *= grey(through);
     return out;
+}
+
+void Tracer::apply_media(RayColour& c, const Ray& ray, double depth, bool hit,
+                         const InteriorList& interiors, ThreadState& state) const {
+    if (interiors.in_solid()) return;  // POV-Ray: no media while inside a solid object
+    auto apply = [&](const std::vector<const scene::Media*>& media) {
+        const MediaEffect e = integrate_media(media, ray, depth, true, env_, interiors, state);
+        c.rgb = c.rgb * e.transmittance + e.added;
+        c.transmit *= grey(e.transmittance);
+    };
+    if (hit && !interiors.empty()) {
+        std::vector<const scene::Media*> inside;
+        for (int i = 0; i < interiors.size(); ++i)
+            if (const scene::Interior* in = interiors[i].interior)
+                for (const auto& m : in->media) inside.push_back(m.get());
+        if (!inside.empty()) apply(inside);
+    }
+    if (!atmosphere_.empty()) apply(atmosphere_);
 }
 
 void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,

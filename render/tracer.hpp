@@ -59,6 +59,10 @@ private:
                            const TexturePoint& at, const Context& ctx, ThreadState& state) const;
     RayColour sky(const glm::dvec3& dir) const;
     void apply_fog(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors) const;
+    // The media of the interiors the ray is in (up to a hit) and the atmosphere, POV-Ray's
+    // order: object media first, each pass over the whole segment.
+    void apply_media(RayColour& c, const Ray& ray, double depth, bool hit,
+                     const InteriorList& interiors, ThreadState& state) const;
     bool find_hit(const Ray& ray, RayKind kind, Hit& hit) const;
 
     const scene::Scene& scene_;
@@ -66,6 +70,11 @@ private:
     TraceOptions options_;
     std::vector<LightSource> own_lights_;  // prepared here when no frame holds them
     LightingEnv env_;
+    bool media_ = false;  // the scene has media (in an interior or the atmosphere)
+    // With media: the interiors around the camera, where primary rays start (POV-Ray tests
+    // every object for the camera inside it).
+    InteriorList camera_interiors_;
+    std::vector<const scene::Media*> atmosphere_;
     int max_level_;
     double adc_bailout_;
     bool legacy_opacity_;

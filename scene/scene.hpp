@@ -6,6 +6,7 @@
 
 #include "scene/camera.hpp"
 #include "scene/light.hpp"
+#include "scene/media.hpp"
 #include "scene/object.hpp"
 
 namespace lumen::scene {
@@ -66,6 +67,7 @@ struct Scene {
     Colour background{0, 0, 0, 0, 0};
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<std::shared_ptr<const Media>> atmosphere;  // scene-level media, in order
     // Every unsupported feature that reached the scene, in source order (lumen --check).
     std::vector<Unsupported> unsupported;
 };

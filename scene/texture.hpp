@@ -70,6 +70,7 @@ struct Normal {
     SourceLoc loc;
 };
 
+struct Media;
 struct Texture;
 using TexturePtr = std::shared_ptr<const Texture>;
 // Layers, bottom first: the last layer is the top one (POV layers textures in written order).
@@ -95,7 +96,7 @@ struct Interior {
     int dispersion_samples = 7;
     double fade_distance = 0.0, fade_power = 0.0;
     glm::dvec3 fade_colour{0, 0, 0};
-    std::optional<Unsupported> media;  // media is not supported yet
+    std::vector<std::shared_ptr<const Media>> media;  // in the order written (scene/media.hpp)
     SourceLoc loc;
 };
 
