@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/patterns/wrap.hpp"
 #include "scene/image_map.hpp"
 
 namespace lumen::render {
@@ -17,14 +18,6 @@ constexpr double kPi = std::numbers::pi;
 
 // r, g, b, filter, transmit of one pixel; a palette index in [0] where indices are wanted.
 using Texel = std::array<double, 5>;
-
-// v brought into [0, n): POV-Ray's wrap, which sends a rounding result of exactly n to 0.
-double wrap(double v, double n) {
-    double t = std::fmod(v, n);
-    if (t < 0) t += n;
-    if (t >= n) t = 0;
-    return t;
-}
 
 // The angle of (x, z) from +x towards +z, in [0, 2 pi).
 double longitude(double x, double z) {

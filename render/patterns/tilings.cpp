@@ -4,6 +4,7 @@
 
 #include "render/patterns/penrose.hpp"
 #include "render/patterns/tiling_layouts.hpp"
+#include "render/patterns/wrap.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,14 +15,6 @@ namespace lumen::render {
 namespace {
 
 const double kSqrt3 = std::sqrt(3.0);
-
-// v mod n in [0, n).
-double wrap(double v, double n) {
-    double t = std::fmod(v, n);
-    if (t < 0) t += n;
-    if (t >= n) t = 0;
-    return t;
-}
 
 // Tiling 1, square tiles: 0 at a tile's centre, 1 on its edges.
 double square_tiles(double x, double z) {

@@ -1,5 +1,7 @@
 # Writes the small height_field probe images (pure Python: zlib + struct).
-import math, struct, zlib, sys, os
+import math, struct, sys, os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_writer import chunk, write_png
 out = sys.argv[1]
 W, H = 24, 18
 def height(x, y):  # 0..1, a couple of bumps and a ridge, uneven on purpose
@@ -8,14 +10,8 @@ def height(x, y):  # 0..1, a couple of bumps and a ridge, uneven on purpose
     h += 0.25 * math.exp(-((u - 0.75) ** 2 + (v - 0.7) ** 2) * 30)
     h += 0.08 * math.sin(u * 11 + v * 3)
     return min(1, max(0, h))
-def chunk(t, data):
-    c = struct.pack(">I", len(data)) + t + data
-    return c + struct.pack(">I", zlib.crc32(t + data) & 0xffffffff)
 def png(name, colour_type, depth, rows, extra=b""):
-    ihdr = struct.pack(">IIBBBBB", W, H, depth, colour_type, 0, 0, 0)
-    raw = b"".join(b"\0" + r for r in rows)
-    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + extra + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
-    open(os.path.join(out, name), "wb").write(data)
+    write_png(os.path.join(out, name), W, H, colour_type, depth, rows, extra)
 g8 = [bytes(int(height(x, y) * 255) for x in range(W)) for y in range(H)]
 png("hf_grey8.png", 0, 8, g8)
 g16 = [b"".join(struct.pack(">H", int(height(x, y) * 65535)) for x in range(W)) for y in range(H)]

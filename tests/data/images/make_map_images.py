@@ -1,17 +1,13 @@
 # Writes the small image_map / bump_map / material_map probe images (pure Python: zlib +
 # struct). Uneven sizes and colours on purpose, so that a flipped axis, a shifted texel or a
 # wrong decoding shows.
-import math, struct, zlib, sys, os
+import math, struct, sys, os
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_writer import chunk, write_png
 out = sys.argv[1]
 W, H = 20, 14
-def chunk(t, data):
-    c = struct.pack(">I", len(data)) + t + data
-    return c + struct.pack(">I", zlib.crc32(t + data) & 0xffffffff)
 def png(name, colour_type, depth, rows, extra=b""):
-    ihdr = struct.pack(">IIBBBBB", W, H, depth, colour_type, 0, 0, 0)
-    raw = b"".join(b"\0" + r for r in rows)
-    data = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + extra + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
-    open(os.path.join(out, name), "wb").write(data)
+    write_png(os.path.join(out, name), W, H, colour_type, depth, rows, extra)
 def colour(x, y):  # a gradient with a bright corner marker at the top left and a dark stripe
     r = int(255 * x / (W - 1))
     g = int(255 * (1 - y / (H - 1)))
