@@ -3,6 +3,7 @@
 // image_pattern { FILE ... [use_alpha] }, material_map { FILE ... texture {} ... }: the image
 // read now (interp/image_spec.hpp) and stored as POV-Ray stores it for that use.
 #include <algorithm>
+#include <sstream>
 
 #include "interp/build_common.hpp"
 #include "interp/image_spec.hpp"
@@ -73,10 +74,15 @@ void read_filter_or_transmit(ItemCursor& cur, const Item& kw, scene::pattern::Im
     if (!img.palette)
         cur.fail(kw.loc, "'" + kw.keyword + " N, V' sets a palette entry, and this image has no palette",
                  "use '" + kw.keyword + " all V'");
-    const int index = int(n + 0.01);  // POV-Ray's rounding of the entry number
-    if (index < 0 || size_t(index) >= data.entry_filter_transmit.size())
-        cur.fail(loc, "palette entry " + std::to_string(index) + " is not in the image's " +
-                          std::to_string(data.entry_filter_transmit.size()) + " entries");
+    const size_t entries = data.entry_filter_transmit.size();
+    // POV-Ray's rounding of the entry number, int(n + 0.01), checked before it is converted.
+    if (!(n + 0.01 >= 0 && n + 0.01 < double(entries))) {
+        std::ostringstream number;
+        number << n;
+        cur.fail(loc, "palette entry " + number.str() + " is not in the image's " +
+                          std::to_string(entries) + " entries");
+    }
+    const int index = int(n + 0.01);
     data.entry_filter_transmit[size_t(index)][channel] = v;
     if (v != 0) data.may_pass_light = true;
     k.entry_changes.insert(k.entry_changes.end(), {double(channel), double(index), double(v)});

@@ -136,6 +136,9 @@ TEST_F(BuildImageMap, LocatedErrors) {
     EXPECT_NE(error_of("plane { z, 0 pigment { image_map { png " + probe("map_palette.png") + " filter 6, 0.5 } } }")
                   .find("palette entry 6 is not in the image's 6 entries"),
               std::string::npos);
+    EXPECT_NE(error_of("plane { z, 0 pigment { image_map { png " + probe("map_palette.png") + " transmit 1e30, 0.5 } } }")
+                  .find("is not in the image's 6 entries"),
+              std::string::npos);
     EXPECT_NE(error_of("plane { z, 0 pigment { image_map { sys \"x.sys\" } } }").find("sys images cannot"),
               std::string::npos);
     // Other image blocks take any map_type and interpolate, as POV-Ray does.

@@ -197,7 +197,9 @@ double evaluate(const pattern::MaterialMap& k, const glm::dvec3& p) {
     const auto at = image_position(k, p);
     if (!at || k.textures <= 0) return 0;
     const double v = interpolated(k, *at, [&](int c, int r) { return index_texel(k, c, r); })[0];
-    int m = k.data->image.palette ? int(v) : int(v * 255.0);
+    // Kept in int's range (a float image's red may be huge, or not a number).
+    const double scaled = k.data->image.palette ? v : v * 255.0;
+    int m = scaled >= 0 ? int(std::min(scaled, 2e9)) : 0;
     if (m > k.textures) m %= k.textures;
     return double(std::max(m, 0));
 }
