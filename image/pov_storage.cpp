@@ -27,12 +27,18 @@ float Decode::apply(float v) const {
     return float(std::pow(double(d), 1.0 / working_gamma));
 }
 
+std::optional<Decode> file_decode(const ImageFile& file) {
+    switch (file.gamma.kind) {
+        case FileGamma::Kind::SRGB: return Decode{Decode::Kind::SRGB, 1};
+        case FileGamma::Kind::Power: return Decode{Decode::Kind::Power, 1.0 / file.gamma.gamma};
+        case FileGamma::Kind::Unspecified: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 Decode default_decode(const ImageFile& file, Format format) {
     switch (format) {
-        case Format::Png:
-            if (file.gamma.kind == FileGamma::Kind::Power)
-                return {Decode::Kind::Power, 1.0 / file.gamma.gamma};
-            return {Decode::Kind::SRGB, 1};
+        case Format::Png: return file_decode(file).value_or(Decode{Decode::Kind::SRGB, 1});
         case Format::Gif:
         case Format::Tga:
         case Format::Bmp:

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "image/image_file.hpp"
@@ -19,6 +20,9 @@ struct Decode {
     double working_gamma = 1;
     float apply(float v) const;
 };
+
+// What the file's own sRGB or gAMA chunk says, if it says anything.
+std::optional<Decode> file_decode(const ImageFile& file);
 
 // The decoding image_map applies by default in a 3.7 scene (assumed_gamma 1): the file's
 // sRGB chunk or gAMA for PNG, sRGB for chunk-less PNG, GIF, TGA, BMP and JPEG, none for

@@ -41,10 +41,8 @@ image::Decode decoding(const BuildContext& ctx, Use use, const image::ImageFile&
         d = image::default_decode(file, format);
     } else if (!ctx.assumed_gamma) {
         return {};
-    } else if (file.gamma.kind == image::FileGamma::Kind::SRGB) {
-        d = {image::Decode::Kind::SRGB, 1};
-    } else if (file.gamma.kind == image::FileGamma::Kind::Power) {
-        d = {image::Decode::Kind::Power, 1.0 / file.gamma.gamma};
+    } else if (const auto chunk = image::file_decode(file)) {
+        d = *chunk;
     } else {
         return {};  // the file's gamma is taken to be the working gamma
     }

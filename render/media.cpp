@@ -15,7 +15,7 @@ namespace {
 
 constexpr int kMaxLitLights = 32;  // lights past this many scatter nothing (ranges kept per light)
 constexpr int kMaxIntervals = 1000;
-
+constexpr int kMaxPieces = 2 * kMaxLitLights + 1;  // lit ranges with the unlit gaps between them
 
 struct Range {
     double start = 0, end = 0;
@@ -127,42 +127,43 @@ private:
                 }
             }
         }
-        // The lit union as alternating pieces over [0, depth].
-        std::vector<Range> lit;
-        for (int i = 0; i < n_lights_; ++i) lit.push_back(ranges_[i]);
-        std::sort(lit.begin(), lit.end(), [](const Range& a, const Range& b) { return a.start < b.start; });
+        // The lit union as alternating pieces over [0, depth] (fixed arrays: no allocation
+        // per ray).
+        Range lit[kMaxLitLights];
+        std::copy(ranges_, ranges_ + n_lights_, lit);
+        std::sort(lit, lit + n_lights_, [](const Range& a, const Range& b) { return a.start < b.start; });
         struct Piece { double start, end; bool lit; };
-        std::vector<Piece> pieces;
+        Piece pieces[kMaxPieces];
+        int count = 0;
         double at = 0;
-        for (size_t i = 0; i < lit.size();) {
+        for (int i = 0; i < n_lights_;) {
             Range u = lit[i++];
-            while (i < lit.size() && lit[i].start <= u.end) u.end = std::max(u.end, lit[i++].end);
-            if (u.start > at) pieces.push_back({at, u.start, false});
-            pieces.push_back({std::max(u.start, at), u.end, true});
+            while (i < n_lights_ && lit[i].start <= u.end) u.end = std::max(u.end, lit[i++].end);
+            if (u.start > at) pieces[count++] = {at, u.start, false};
+            pieces[count++] = {std::max(u.start, at), u.end, true};
             at = u.end;
         }
-        if (at < depth || pieces.empty()) pieces.push_back({at, depth, false});
-        const int wanted = std::min(std::max(lead_->intervals, int(pieces.size())), kMaxIntervals);
-        starts_.clear();
-        if (pieces.size() == 1) {
-            const int n = !pieces[0].lit && constant_ ? 1 : wanted;
-            for (int i = 0; i <= n; ++i) starts_.push_back(depth * i / n);
+        if (at < depth || count == 0) pieces[count++] = {at, depth, false};
+        const int wanted = std::min(std::max(lead_->intervals, count), kMaxIntervals);
+        n_intervals_ = 0;
+        auto cut = [&](const Piece& p, int n) {
+            for (int k = 0; k < n; ++k) starts_[n_intervals_++] = p.start + (p.end - p.start) * k / n;
+        };
+        if (count == 1) {
+            cut({0, depth, pieces[0].lit}, !pieces[0].lit && constant_ ? 1 : wanted);
         } else {
             double total = 0;
-            for (const Piece& p : pieces) total += p.lit ? lead_->ratio : 1 - lead_->ratio;
+            for (int i = 0; i < count; ++i) total += pieces[i].lit ? lead_->ratio : 1 - lead_->ratio;
             int remaining = wanted;
-            const int count = int(pieces.size());
             for (int i = 0; i < count; ++i) {
-                const Piece& p = pieces[size_t(i)];
-                const double w = p.lit ? lead_->ratio : 1 - lead_->ratio;
+                const double w = pieces[i].lit ? lead_->ratio : 1 - lead_->ratio;
                 int n = int(std::floor(total > 0 ? w / total * wanted : 0)) + 1;
                 n = std::max(1, std::min(n, remaining - count + i + 1));
                 remaining -= n;
-                for (int k = 0; k < n; ++k) starts_.push_back(p.start + (p.end - p.start) * k / n);
+                cut(pieces[i], n);
             }
-            starts_.push_back(depth);
         }
-        n_intervals_ = int(starts_.size()) - 1;
+        starts_[n_intervals_] = depth;
     }
 
     Coefficients coefficients(double s) {
@@ -190,8 +191,7 @@ private:
             if (!reach) continue;
             glm::dvec3 filter =
                 shadow_filter(*env_->geometry, p, ls.dir, *reach, *interiors_, state_->counters);
-            if (filter != glm::dvec3(0) && l.light && l.light->media_attenuation && env_->atmosphere &&
-                !env_->atmosphere->empty())
+            if (filter != glm::dvec3(0) && atmosphere_dims(l, *env_))
                 filter *= media_transmittance(*env_->atmosphere, Ray{p, ls.dir}, ls.distance);
             if (filter == glm::dvec3(0)) continue;
             const double alpha = glm::dot(ls.dir, ray_.dir);
@@ -282,11 +282,23 @@ private:
     const LightSource* lights_[kMaxLitLights] = {};
     Range ranges_[kMaxLitLights];
     int n_lights_ = 0;
-    std::vector<double> starts_;
+    double starts_[kMaxIntervals + 1];  // the intervals' bounds, n_intervals_ + 1 of them
     int n_intervals_ = 0;
 };
 
 }  // namespace
+
+void media_in(const InteriorList& interiors, std::vector<const scene::Media*>& out) {
+    out.clear();
+    for (int i = 0; i < interiors.size(); ++i)
+        if (const scene::Interior* in = interiors[i].interior)
+            for (const auto& m : in->media) out.push_back(m.get());
+}
+
+bool atmosphere_dims(const LightSource& l, const LightingEnv& env) {
+    return l.light && l.light->media_attenuation && l.light->media_interaction && env.atmosphere &&
+           !env.atmosphere->empty();
+}
 
 glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, const Ray& ray,
                                double depth) {

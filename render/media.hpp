@@ -32,6 +32,12 @@ MediaEffect integrate_media(const std::vector<const scene::Media*>& media, const
                             double depth, bool lit, const LightingEnv& env,
                             const InteriorList& interiors, ThreadState& state);
 
+// The media of the interiors a ray is in, in list order (POV-Ray's segment list), into `out`.
+void media_in(const InteriorList& interiors, std::vector<const scene::Media*>& out);
+
+// Whether the atmosphere dims this light on its way to a point (`media_attenuation on`).
+bool atmosphere_dims(const LightSource& light, const LightingEnv& env);
+
 // What is left of light crossing the media over the segment (shadow rays: extinction only,
 // without jitter).
 glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, const Ray& ray,

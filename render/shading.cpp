@@ -124,8 +124,7 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     glm::dvec3 filter;
     const bool fog = fog_dims(l, env);
     // Atmospheric media dims it likewise (object media always do: render/shadows.cpp).
-    const bool media = l.light && l.light->media_attenuation && l.light->media_interaction &&
-                       env.atmosphere && !env.atmosphere->empty();
+    const bool media = atmosphere_dims(l, env);
     double solid = 0;  // the way inside solid objects, where there is no fog
     if (l.shadowless) {
         filter = glm::dvec3(projection_reach(l, s.point, ls.dir, ls.distance).has_value());

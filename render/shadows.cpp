@@ -120,18 +120,15 @@ private:
             travelled_ += depth;
             return;
         }
-        media_.clear();
-        for (int i = 0; i < inside_.size(); ++i)
-            if (const scene::Interior* in = inside_[i].interior)
-                for (const auto& m : in->media) media_.push_back(m.get());
-        if (!media_.empty())
-            filter_ *= media_transmittance(media_, Ray{origin_ + travelled_ * dir_, dir_}, depth);
+        thread_local std::vector<const scene::Media*> media;  // kept: no allocation per ray
+        media_in(inside_, media);
+        if (!media.empty())
+            filter_ *= media_transmittance(media, Ray{origin_ + travelled_ * dir_, dir_}, depth);
         travelled_ += depth;
     }
 
     glm::dvec3 origin_;
     double travelled_ = 0;
-    std::vector<const scene::Media*> media_;
     glm::dvec3 dir_;
     double remaining_;
     InteriorList inside_;

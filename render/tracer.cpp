@@ -445,10 +445,8 @@ void Tracer::apply_media(RayColour& c, const Ray& ray, double depth, bool hit,
         c.transmit *= grey(e.transmittance);
     };
     if (hit && !interiors.empty()) {
-        std::vector<const scene::Media*> inside;
-        for (int i = 0; i < interiors.size(); ++i)
-            if (const scene::Interior* in = interiors[i].interior)
-                for (const auto& m : in->media) inside.push_back(m.get());
+        thread_local std::vector<const scene::Media*> inside;  // kept: no allocation per ray
+        media_in(interiors, inside);
         if (!inside.empty()) apply(inside);
     }
     if (!atmosphere_.empty()) apply(atmosphere_);
