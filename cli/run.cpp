@@ -87,11 +87,15 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     for (const Diagnostic& d : compiled.geometry().shape_warnings()) print_diagnostic(d);
     if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
     if (encoder) encoder->write(frame.output);
-    std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s\n",
+    const std::string photons =
+        stats.photons_shot ? std::to_string(stats.photons_shot) + " photons shot (" +
+                                 std::to_string(stats.photons_stored) + " stored), "
+                           : "";
+    std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s%s\n",
                  o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
                  format_duration(parse_seconds).c_str(), image.width, image.height,
                  format_duration(render_seconds).c_str(),
-                 static_cast<unsigned long long>(stats.total_rays),
+                 static_cast<unsigned long long>(stats.total_rays), photons.c_str(),
                  frame.output.empty() ? "no file written (-F)" : ("wrote " + frame.output).c_str());
 }
 

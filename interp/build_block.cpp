@@ -28,11 +28,11 @@ const std::vector<std::string> kData = {
     "tiles",             // read by its texture (build_texture.cpp)
     "image_map", "image_pattern", "bump_map", "material_map",  // build_image_map.cpp
     "contained_by",      // read by its isosurface (build_isosurface.cpp)
-    "scattering"};       // read by its media (build_media.cpp)
+    "scattering",        // read by its media (build_media.cpp)
+    "photons"};          // global, object and light blocks (build_photons.cpp)
 // Reserved block words lumen parses but does not build (the evaluator makes Unsupported):
 // the unrendered shapes, then the rest.
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
-    "photons",
     "subsurface",
     "density_file", "spline",
     "function", "rainbow"});

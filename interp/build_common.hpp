@@ -203,4 +203,11 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& globals);
 // The BlockValue inside a value item (data blocks such as `reflection { }`), or null.
 const BlockValue* block_of(const Item& item, std::string_view keyword = {});
 
+// ---- photons (build_photons.cpp) ------------------------------------------------------------
+// global_settings' photons { } body; features lumen does not render go to `unsupported`.
+scene::PhotonSettings build_global_photons(ItemCursor& cur,
+                                           std::vector<scene::Unsupported>& unsupported);
+void read_object_photons(ItemCursor& cur, const BlockValue& block, scene::Object& obj);
+void read_light_photons(ItemCursor& cur, const BlockValue& block, scene::Light& light);
+
 }  // namespace lumen::interp

@@ -63,6 +63,9 @@ void apply_global_settings(ItemCursor& cur, scene::GlobalSettings& g) {
         if (item.kind == Item::Kind::Value) {
             if (item.value.is<scene::Unsupported>()) {  // photons { }, subsurface { }
                 g.unsupported.push_back(item.value.as<scene::Unsupported>());
+            } else if (const BlockValue* b = block_of(item, "photons")) {
+                ItemCursor sub(cur.ctx(), *b);
+                g.photons = build_global_photons(sub, g.unsupported);
             } else if (const BlockValue* b = block_of(item, "radiosity")) {
                 scene::RadiositySettings r = g.radiosity.value_or(scene::RadiositySettings{});
                 read_radiosity(cur.ctx(), *b, r);

@@ -68,6 +68,8 @@ scene::Light build_light(ItemCursor& cur) {
         if (item.kind == Item::Kind::Value) {
             if (item.value.is<scene::Unsupported>()) {  // photons { } ...
                 light.unsupported.push_back(item.value.as<scene::Unsupported>());
+            } else if (const BlockValue* b = block_of(item, "photons")) {
+                read_light_photons(cur, *b, light);
             } else if (const BlockValue* b = block_of(item, "looks_like")) {
                 // Placed at the light, and never shadowing its own light.
                 auto obj = std::make_shared<scene::Object>(

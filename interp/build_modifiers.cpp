@@ -134,6 +134,8 @@ bool apply_value(ItemCursor& cur, const Item& item, scene::Object& obj) {
             obj.clipped_by.insert(obj.clipped_by.end(), more.begin(), more.end());
         } else if (b->keyword == "bounded_by") {
             obj.bounded_by = read_bound_objects(cur, *b, obj);
+        } else if (b->keyword == "photons") {
+            read_object_photons(cur, *b, obj);
         } else if (b->keyword != "radiosity") {  // object radiosity{importance}: sampling only
             return false;
         }
@@ -172,7 +174,7 @@ bool apply_object_modifier(ItemCursor& cur, const Item& item, scene::Object& obj
     else if (w == "no_reflection") obj.no_reflection = cur.optional_bool();
     else if (w == "double_illuminate") obj.double_illuminate = cur.optional_bool();
     else if (w == "no_radiosity") obj.no_radiosity = cur.optional_bool();
-    else if (w == "split_union") cur.optional_bool();  // a speed hint only
+    else if (w == "split_union") obj.split_union = cur.optional_bool();
     else if (w == "uv_mapping") {
         if (!obj.texture.empty())  // as POV-Ray refuses it
             cur.fail(item.loc, "uv_mapping must be specified before the texture");

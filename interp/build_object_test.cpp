@@ -201,11 +201,28 @@ TEST_F(BuildObject, Errors) {
               "t.pov:1:20: error: 'sturm' is not a cylinder keyword");
 }
 
-TEST_F(BuildObject, UnsupportedShapeAndModifiersAreRecorded) {
+TEST_F(BuildObject, UnsupportedShapeIsRecorded) {
     scene::Scene s = run("union { lemon { } sphere { 0, 1 photons { target } } }");
-    ASSERT_EQ(s.unsupported.size(), 2u);
+    ASSERT_EQ(s.unsupported.size(), 1u);
     EXPECT_EQ(s.unsupported[0].feature, "lemon");
-    EXPECT_EQ(s.unsupported[1].feature, "photons");
+}
+
+TEST_F(BuildObject, PhotonsBlock) {
+    scene::Scene s = run("sphere { 0, 1 photons { target 0.5 refraction on reflection off "
+                         "collect off pass_through } }");
+    ASSERT_TRUE(s.objects[0]->photons.has_value());
+    const scene::ObjectPhotons& p = *s.objects[0]->photons;
+    EXPECT_TRUE(p.target);
+    EXPECT_DOUBLE_EQ(p.target_mult, 0.5);
+    // A pass_through target cannot refract: POV-Ray warns and turns refraction off.
+    EXPECT_EQ(p.refraction, scene::PhotonToggle::Off);
+    EXPECT_EQ(p.reflection, scene::PhotonToggle::Off);
+    EXPECT_FALSE(p.collect);
+    EXPECT_TRUE(p.pass_through);
+    EXPECT_FALSE(warnings.empty());
+    // target 0 (or less) is no target.
+    EXPECT_FALSE(run("sphere { 0, 1 photons { target 0 } }").objects[0]->photons->target);
+    EXPECT_FALSE(run("sphere { 0, 1 }").objects[0]->photons.has_value());
 }
 
 }  // namespace

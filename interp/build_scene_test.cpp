@@ -35,8 +35,15 @@ TEST_F(BuildScene, RadiosityAndPhotons) {
     EXPECT_EQ(s.globals.radiosity->count, 100);
     EXPECT_EQ(s.globals.radiosity->count_pool, 2000);
     EXPECT_DOUBLE_EQ(s.globals.radiosity->brightness, 2);
-    ASSERT_EQ(s.unsupported.size(), 1u);
-    EXPECT_EQ(s.unsupported[0].feature, "photons");
+    ASSERT_TRUE(s.globals.photons.has_value());
+    EXPECT_EQ(s.globals.photons->count, 1000);
+    EXPECT_TRUE(s.unsupported.empty());
+    // Media photons and photon files are not rendered yet: listed where they are written.
+    const scene::Scene m = run("global_settings { photons { spacing 0.1 media 100, 2 "
+                               "save_file \"p.ph\" } }");
+    ASSERT_EQ(m.unsupported.size(), 2u);
+    EXPECT_EQ(m.unsupported[0].feature, "photons media");
+    EXPECT_EQ(m.unsupported[1].feature, "photons save_file");
 }
 
 TEST_F(BuildScene, BackgroundPremultipliedByTransmit) {
@@ -79,11 +86,11 @@ TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
         "#declare P = pigment { facets }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
-        "sphere { 0, 1 photons { target } }\n"
+        "rainbow { angle 42 }\n"
         "lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
     EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
-    EXPECT_EQ(s.unsupported[1].feature, "photons");
+    EXPECT_EQ(s.unsupported[1].feature, "rainbow");
     EXPECT_EQ(s.unsupported[2].feature, "lemon");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);
 }

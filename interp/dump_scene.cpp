@@ -178,6 +178,48 @@ Json interior(const scene::Interior& in) {
     return o;
 }
 
+const char* toggle_text(scene::PhotonToggle t) {
+    return t == scene::PhotonToggle::On ? "on" : t == scene::PhotonToggle::Off ? "off" : "unset";
+}
+
+void put_toggle(Json& o, const char* key, scene::PhotonToggle t) {
+    if (t != scene::PhotonToggle::Unset) o.put(key, Json::str(toggle_text(t)));
+}
+
+Json object_photons(const scene::ObjectPhotons& p) {
+    const scene::ObjectPhotons d;
+    Json o;
+    put_if(o, "target", p.target, d.target);
+    put_if(o, "target_mult", p.target_mult, d.target_mult);
+    put_toggle(o, "refraction", p.refraction);
+    put_toggle(o, "reflection", p.reflection);
+    put_if(o, "collect", p.collect, d.collect);
+    put_if(o, "pass_through", p.pass_through, d.pass_through);
+    return o;
+}
+
+Json global_photons(const scene::PhotonSettings& p) {
+    const scene::PhotonSettings d;
+    Json o;
+    put_if(o, "spacing", p.spacing, d.spacing);
+    put_if(o, "count", double(p.count), double(d.count));
+    put_if(o, "gather_min", double(p.gather_min), double(d.gather_min));
+    put_if(o, "gather_max", double(p.gather_max), double(d.gather_max));
+    put_if(o, "media_steps", double(p.media_steps), double(d.media_steps));
+    put_if(o, "media_factor", p.media_factor, d.media_factor);
+    put_if(o, "jitter", p.jitter, d.jitter);
+    put_if(o, "max_trace_level", double(p.max_trace_level), double(d.max_trace_level));
+    put_if(o, "adc_bailout", p.adc_bailout, d.adc_bailout);
+    put_if(o, "autostop", p.autostop, d.autostop);
+    put_if(o, "expand_percent", p.expand_percent, d.expand_percent);
+    put_if(o, "expand_min", double(p.expand_min), double(d.expand_min));
+    put_if(o, "radius", p.radius, d.radius);
+    put_if(o, "radius_mult", p.radius_mult, d.radius_mult);
+    put_if(o, "media_radius", p.media_radius, d.media_radius);
+    put_if(o, "media_radius_mult", p.media_radius_mult, d.media_radius_mult);
+    return o;
+}
+
 Json object(const scene::Object& obj);
 
 struct ShapeDumper {
@@ -492,6 +534,7 @@ Json object(const scene::Object& obj) {
     put_if(o, "no_reflection", obj.no_reflection, d.no_reflection);
     put_if(o, "double_illuminate", obj.double_illuminate, d.double_illuminate);
     put_if(o, "no_radiosity", obj.no_radiosity, d.no_radiosity);
+    if (obj.photons) o.put("photons", object_photons(*obj.photons));
     Json u = Json::array();
     for (const auto& x : obj.unsupported) u.push(unsupported_text(x));
     put_nonempty(o, "unsupported", u);
@@ -561,6 +604,13 @@ Json light(const scene::Light& l) {
     put_if(o, "media_attenuation", l.media_attenuation, d.media_attenuation);
     if (l.looks_like) o.put("looks_like", object(*l.looks_like));
     if (l.projected_through) o.put("projected_through", object(*l.projected_through));
+    {
+        Json ph;
+        put_toggle(ph, "refraction", l.photons.refraction);
+        put_toggle(ph, "reflection", l.photons.reflection);
+        put_if(ph, "area_light", l.photons.area_light, false);
+        put_nonempty(o, "photons", ph);
+    }
     Json u = Json::array();
     for (const auto& x : l.unsupported) u.push(unsupported_text(x));
     put_nonempty(o, "unsupported", u);
@@ -601,6 +651,7 @@ Json globals(const scene::GlobalSettings& g) {
     put_if(o, "noise_generator", double(g.noise_generator), double(d.noise_generator));
     put_if(o, "number_of_waves", double(g.number_of_waves), double(d.number_of_waves));
     if (g.radiosity) o.put("radiosity", radiosity(*g.radiosity));
+    if (g.photons) o.put("photons", global_photons(*g.photons));
     Json u = Json::array();
     for (const auto& x : g.unsupported) u.push(unsupported_text(x));
     put_nonempty(o, "unsupported", u);

@@ -1,5 +1,5 @@
 // Built-in functions that ask about an object: min_extent/max_extent (the box POV-Ray stores,
-// interp/object_extents.cpp), and trace/inside, answered by the renderer through
+// scene/object_extents.cpp), and trace/inside, answered by the renderer through
 // InterpOptions::object_queries.
 #include <cmath>
 
@@ -7,7 +7,7 @@
 
 #include "interp/builtin_table.hpp"
 #include "interp/conversions.hpp"
-#include "interp/object_extents.hpp"
+#include "scene/object_extents.hpp"
 
 namespace lumen::interp {
 namespace {
@@ -51,7 +51,7 @@ void add_object_builtins(BuiltinTable& t) {
     for (const bool max : {false, true})
         t[max ? "max_extent" : "min_extent"] = {
             1, 1, false, [max](Evaluator&, const ast::Node& c, Args& a) {
-                const Extents e = object_extents(*object_arg(a[0]));
+                const scene::Extents e = scene::object_extents(*object_arg(a[0]));
                 return vec3_value(max ? e.max : e.min, c.loc);
             }};
     t["trace"] = {3, 4, true, [](Evaluator& ev, const ast::Node& c, Args&) { return trace(ev, c); }};

@@ -144,6 +144,8 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
     hit.double_illuminate = leaf.double_illuminate;
     hit.no_radiosity = leaf.no_radiosity;
     hit.hollow = leaf.hollow;
+    hit.photons = leaf.photons;
+    hit.photon_target = leaf.photon_target;
     hit.textured_blob = nullptr;
     if (leaf.kind == NodeKind::Shape) {
         const auto* blob = std::get_if<BlobShape>(&store.shapes[leaf.shape]);
@@ -464,6 +466,18 @@ bool Geometry::inside(const scene::Object& object, const glm::dvec3& p) {
     NodeStore store;
     uint32_t root = compile_object(store, object, NodeContext{}, false);
     return inside_node(store, root, p);
+}
+
+InteriorList Geometry::interiors_around(const glm::dvec3& p) const {
+    InteriorList out;
+    const std::vector<PlacedObject>& placed = placed_objects();
+    for (size_t i = 0; i < placed.size(); ++i) {
+        const scene::Object* o = placed[i].object;
+        if (!o || !inside_placed(i, p)) continue;
+        const scene::Interior* in = o->interior ? &*o->interior : nullptr;
+        out.push(in ? static_cast<const void*>(in) : o, in, o->hollow);
+    }
+    return out;
 }
 
 }  // namespace lumen::render

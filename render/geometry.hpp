@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "base/diagnostics.hpp"
+#include "render/interior_list.hpp"
 #include "render/intersector.hpp"
 #include "scene/scene.hpp"
 
@@ -70,6 +71,9 @@ public:
     std::vector<const scene::Object*> solid_primitives(const glm::dvec3& eye) const;
     // Whether world point p is inside placed_objects()[i].
     bool inside_placed(size_t i, const glm::dvec3& p) const;
+    // The interiors of every object around p, in scene order: where a ray starting at p is
+    // (POV-Ray tests every object for the camera, and for a light shooting photons).
+    InteriorList interiors_around(const glm::dvec3& p) const;
     // Whether no ray can see into placed_objects()[i] from outside it: no layer of its texture
     // lets light through, and camera and reflection rays do not pass it by (no_image,
     // no_reflection).

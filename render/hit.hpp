@@ -32,6 +32,10 @@ struct Hit {
     // Use these rather than object->no_image and friends.
     bool no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;
+    // Photon flags after CSG inheritance (null: the defaults) and the outermost photon target
+    // among the primitive and its CSG ancestors (null: none), which photons are shot at.
+    const scene::ObjectPhotons* photons = nullptr;
+    const scene::Object* photon_target = nullptr;
     // A blob whose components have textures of their own, which shading blends by their
     // densities at `local_point` (the hit in the blob's space); null otherwise.
     const BlobShape* textured_blob = nullptr;

@@ -63,4 +63,21 @@ private:
     Entry entries_[kCapacity];  // only [0, size_) is meaningful
 };
 
+// Where a ray goes when it crosses the surface of an object with interior `in` (identity `id`):
+// the interior list beyond the surface, and the ratio of refractive indices n1/n2 there
+// (eye rays and photons alike).
+double cross_interface(const InteriorList& before, const void* id, const scene::Interior* in,
+                       bool hollow, InteriorList& after);
+
+// The relative IOR (n2/n1) fresnel reflection uses where a ray in `ray_in` meets the surface
+// of the object `id`, whose crossing has the ratio `eta` (n1/n2, from cross_interface): the
+// physical 1/eta, but for a ray leaving the innermost object it is in while it is inside
+// another as well (the camera inside a plane, say), where POV-Ray takes 1, so that fresnel
+// gives reflection_min (measured on glass spheres: with the camera inside a plane's
+// half-space the inner reflections follow 1 exactly, without it the physical ratio).
+inline double fresnel_relative_ior(const InteriorList& ray_in, const void* id, double eta) {
+    if (ray_in.size() >= 2 && ray_in.last().id == id) return 1.0;
+    return 1.0 / eta;
+}
+
 }  // namespace lumen::render

@@ -90,6 +90,20 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
     return out;
 }
 
+double beam_factor(const LightSource& l, const glm::dvec3& point) {
+    if (l.spot) {
+        const glm::dvec3 d = point - l.position;
+        const double len = glm::length(d);
+        return len > 0 ? spot_attenuation(l, glm::dot(d, l.axis) / len) : 0.0;
+    }
+    return l.cylinder ? cylinder_attenuation(l, point) : 1.0;
+}
+
+double light_fade(const LightSource& l, double distance) {
+    if (!(l.fade_power > 0) || !(std::fabs(l.fade_distance) > kEpsilon)) return 1;
+    return 2 / (1 + std::pow(distance / l.fade_distance, l.fade_power));
+}
+
 bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out) {
     if (l.parallel) {
         // Every ray uses the fixed direction; the shadow length is measured along it.
@@ -106,8 +120,7 @@ bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out)
     else if (l.cylinder)
         att = cylinder_attenuation(l, point);
     if (att == 0) return false;
-    if (l.fade_power > 0 && std::fabs(l.fade_distance) > kEpsilon)
-        att *= 2 / (1 + std::pow(out.distance / l.fade_distance, l.fade_power));
+    att *= light_fade(l, out.distance);
     out.colour = l.colour * att;
     return std::fabs(out.colour.x) >= kEpsilon || std::fabs(out.colour.y) >= kEpsilon ||
            std::fabs(out.colour.z) >= kEpsilon;

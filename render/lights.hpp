@@ -37,6 +37,11 @@ struct LightSample {
 
 std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights);
 
+// The spotlight cone's or the cylinder's attenuation towards `point` (1 for other lights).
+double beam_factor(const LightSource& light, const glm::dvec3& point);
+// fade_distance / fade_power attenuation `distance` from the light (1 without fade_power).
+double light_fade(const LightSource& light, double distance);
+
 // Returns false when the point gets no light at all (outside a cone).
 bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& out);
 

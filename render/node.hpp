@@ -38,6 +38,11 @@ struct Node {
     const scene::LayeredTexture* texture = nullptr;  // after inheritance; null = default
     const scene::LayeredTexture* interior_texture = nullptr;  // after inheritance; null = none
     const scene::Interior* interior = nullptr;       // after inheritance; null = default
+    // Photon flags after inheritance (the outermost CSG block wins; null = defaults), and the
+    // outermost photon target among the node and its CSG ancestors (shot as a whole; null:
+    // none).
+    const scene::ObjectPhotons* photons = nullptr;
+    const scene::Object* photon_target = nullptr;
 };
 
 struct NodeStore {
@@ -56,6 +61,9 @@ struct NodeContext {
     const scene::LayeredTexture* texture = nullptr;
     const scene::LayeredTexture* interior_texture = nullptr;
     const scene::Interior* interior = nullptr;
+    const scene::ObjectPhotons* photons = nullptr;  // an enclosing object's photons { }
+    const scene::Object* photon_target = nullptr;   // an enclosing photon target
+    bool target_splits = false;  // it is a union whose members are photon targets themselves
     bool no_shadow = false, no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;
     bool invert = false, flip = false;

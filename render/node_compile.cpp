@@ -35,6 +35,24 @@ void inherit_flags(To& to, const NodeContext& ctx, const scene::Object& o) {
     to.hollow = ctx.hollow || o.hollow;
 }
 
+// POV-Ray hands a CSG's photons { } flags down to its members: the outermost block counts.
+const scene::ObjectPhotons* inherited_photons(const NodeContext& ctx, const scene::Object& o) {
+    if (ctx.photons) return ctx.photons;
+    return o.photons ? &*o.photons : nullptr;
+}
+
+// The photon target a node belongs to: the outermost target around it, except that a target
+// union (split_union, the default) makes each of its members a target of its own.
+const scene::Object* outer_target(const NodeContext& ctx, const scene::Object& o) {
+    if (ctx.photon_target && !ctx.target_splits) return ctx.photon_target;
+    return ctx.photon_target || (o.photons && o.photons->target) ? &o : nullptr;
+}
+
+bool splits_for_photons(const scene::Object& o) {
+    const auto* csg = std::get_if<scene::Csg>(&o.shape);
+    return csg && csg->op == scene::CsgOp::Union && o.split_union;
+}
+
 void pass_flags(NodeContext& to, const Node& from) {
     to.no_shadow = from.no_shadow;
     to.no_image = from.no_image;
@@ -96,6 +114,8 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     node.interior_texture =
         object.interior_texture.empty() ? ctx.interior_texture : &object.interior_texture;
     node.interior = object.interior ? &*object.interior : ctx.interior;
+    node.photons = inherited_photons(ctx, object);
+    node.photon_target = outer_target(ctx, object);
 
     std::vector<uint32_t> clips = compile_helpers(store, object.clipped_by, ctx, accelerate, ctx.clips);
     std::vector<uint32_t> bounds = compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
@@ -114,6 +134,9 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         inner.texture = node.texture;
         inner.interior_texture = node.interior_texture;
         inner.interior = node.interior;
+        inner.photons = node.photons;
+        inner.photon_target = node.photon_target;
+        inner.target_splits = node.photon_target == &object && splits_for_photons(object);
         pass_flags(inner, node);
         inner.flip = node.flip;
         inner.depth = ctx.depth + 1;
@@ -208,6 +231,9 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         inner.interior_texture =
             o.interior_texture.empty() ? ctx.interior_texture : &o.interior_texture;
         inner.interior = o.interior ? &*o.interior : ctx.interior;
+        inner.photons = inherited_photons(ctx, o);
+        inner.photon_target = outer_target(ctx, o);
+        inner.target_splits = inner.photon_target == &o && splits_for_photons(o);
         inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
         inner.bounds = compile_helpers(store, o.bounded_by, ctx, true, ctx.bounds);
         contexts.push_back(std::move(inner));

@@ -12,6 +12,7 @@
 #include "render/antialias.hpp"
 #include "render/camera.hpp"
 #include "render/frame.hpp"
+#include "render/photons/photon_pass.hpp"
 #include "render/tracer.hpp"
 
 namespace lumen::render {
@@ -71,6 +72,9 @@ Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats
     trace_options.quality = options.quality;
     trace_options.alpha = options.alpha;
     trace_options.indirect = options.indirect;
+    // The photon pass before the first pixel (POV-Ray shoots before it renders).
+    const std::unique_ptr<PhotonPass> photons = shoot_photons(frame, options.threads);
+    trace_options.photons = photons.get();
     const Tracer tracer(frame, trace_options);
     const CameraModel camera(scene.camera, options.width, options.height);
     const BlockRenderer blocks_renderer(tracer, camera, options,
@@ -138,6 +142,7 @@ Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats
     if (failure) std::rethrow_exception(failure);
 
     total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (photons) total.photons_shot = photons->shot, total.photons_stored = photons->surface.size();
     if (stats) *stats = total;
     return image;
 }

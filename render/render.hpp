@@ -42,6 +42,7 @@ struct Image {
 
 struct RenderStats {
     uint64_t primary_rays = 0, total_rays = 0, shadow_rays = 0;
+    uint64_t photons_shot = 0, photons_stored = 0;  // the photon pass (POV's statistics)
     double seconds = 0;
 };
 

@@ -22,6 +22,12 @@ bool is_black(const glm::dvec3& c) {
 
 double max_component(const glm::dvec3& c) { return std::max({c.x, c.y, c.z}); }
 
+// Where photons light the point, the light's photon flags: refracting targets shadow it black.
+const scene::LightPhotons* photon_shadows(const LightSource& l, const SurfaceSample& s,
+                                          const LightingEnv& env) {
+    return env.photon_map && s.collects_photons && l.light ? &l.light->photons : nullptr;
+}
+
 // Sum of the recursive 4-corner averages over an area light's grid.
 class AreaShadow {
 public:
@@ -56,7 +62,7 @@ private:
             const std::optional<double> reach = projection_reach(l_, s_.point, to, dist);
             state_.area_filter[k] =
                 reach ? shadow_filter(*env_.geometry, s_.point, to, *reach, interiors_,
-                                      state_.counters)
+                                      state_.counters, nullptr, photon_shadows(l_, s_, env_))
                       : glm::dvec3(0);
             state_.area_valid[k] = 1;
         }
@@ -136,7 +142,7 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
         const std::optional<double> reach = projection_reach(l, s.point, ls.dir, ls.distance);
         if (!reach) return glm::dvec3(0);
         filter = shadow_filter(*env.geometry, s.point, ls.dir, *reach, interiors, state.counters,
-                               fog || media ? &solid : nullptr);
+                               fog || media ? &solid : nullptr, photon_shadows(l, s, env));
     }
     if (media && solid < ls.distance && filter != glm::dvec3(0))
         filter *= media_transmittance(*env.atmosphere, Ray{s.point, ls.dir}, ls.distance - solid);
@@ -252,6 +258,32 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
             out += highlights(s, f, ls.dir, cos_light) * lc;
     }
     return out;
+}
+
+glm::dvec3 photon_light(const SurfaceSample& s, const GatheredPhotons& photons) {
+    if (photons.count() == 0 || !(photons.radius_sq > 0)) return glm::dvec3(0);
+    const scene::Finish& f = *s.finish;
+    glm::dvec3 sum(0);
+    for (const Photon* p : photons.photons) {
+        const glm::dvec3 dir = p->direction();
+        // Lambert compensation: the estimate divides by the cosine it will multiply by.
+        const glm::dvec3 flux = p->colour() / std::clamp(glm::dot(s.raw_normal, dir), 0.1, 1.0);
+        const double cos_light = glm::dot(s.normal, dir);
+        double intensity_cos = cos_light;
+        double diffuse = f.diffuse;
+        const bool front = cos_light >= kEpsilon;
+        if (!front) {
+            if (s.double_illuminate) intensity_cos = std::fabs(cos_light);
+            else if (f.diffuse_back > 0) intensity_cos = std::fabs(cos_light), diffuse = f.diffuse_back;
+            else continue;
+        }
+        if (diffuse > 0) {
+            const double k = f.brilliance == 1 ? intensity_cos : std::pow(intensity_cos, f.brilliance);
+            sum += k * diffuse * s.opacity * s.colour * flux;
+        }
+        if (front) sum += highlights(s, f, dir, cos_light) * flux;
+    }
+    return sum / (std::numbers::pi * photons.radius_sq);
 }
 
 Reflectivity reflectivity(const scene::Finish& f, double cos_i, double relative_ior,

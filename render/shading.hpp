@@ -9,6 +9,7 @@
 #include "render/interior_list.hpp"
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
+#include "render/photons/photon_map.hpp"
 #include "render/trace_state.hpp"
 #include "scene/scene.hpp"
 #include "scene/texture.hpp"
@@ -27,6 +28,7 @@ struct SurfaceSample {
     const scene::Finish* finish = nullptr;
     bool double_illuminate = false;
     double film_thickness = 0;   // irid: the film's thickness here (irid_thickness)
+    bool collects_photons = true;  // the object's photons { collect }
 };
 
 // Scene-wide lighting state shared by all threads (read-only while rendering).
@@ -41,6 +43,8 @@ struct LightingEnv {
     noise::Generator noise_generator = noise::Generator::RangeCorrected;
     bool ambient_off = false;  // radiosity with #version >= 3.7 drops ambient
     int quality = 9;
+    // Set when a surface photon map exists: refracting photon targets then shadow black.
+    bool photon_map = false;
 };
 
 // POV's metallic factor per channel: 1 + m·(1 − Fm)·(rgb − 1), with the Fresnel-like Fm of the
@@ -61,6 +65,11 @@ double irid_thickness(const scene::Finish& finish, const glm::dvec3& p,
 // Ambient + emission + every light's diffuse and highlights (with shadows).
 glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
                        const InteriorList& interiors, ThreadState& state);
+
+// The light a layer receives from the photons gathered at its point (POV-Ray's estimate: each
+// photon shaded as a light from where it came, its colour over the disc πr², and divided by
+// the cosine with the surface's own normal, kept within [0.1, 1]).
+glm::dvec3 photon_light(const SurfaceSample& s, const GatheredPhotons& photons);
 
 // Reflectivity of a layer: per-channel colour Rf and the factor by which the ray
 // weight is multiplied. `relative_ior` (n2/n1) is only used by fresnel.

@@ -6,6 +6,7 @@
 
 #include "render/media.hpp"
 #include "render/normal.hpp"
+#include "render/photons/photon_flags.hpp"
 #include "render/texture_layers.hpp"
 
 namespace lumen::render {
@@ -65,9 +66,9 @@ class ShadowWalk {
 public:
     ShadowWalk(const glm::dvec3& point, const glm::dvec3& dir, double distance,
                const InteriorList& interiors, TraceCounters& counters,
-               const Intersector* skipping_clear)
+               const Intersector* skipping_clear, const scene::LightPhotons* refracted)
         : origin_(point), dir_(dir), remaining_(distance), inside_(interiors), counters_(counters),
-          skipping_clear_(skipping_clear) {}
+          skipping_clear_(skipping_clear), refracted_(refracted) {}
 
     // Starts the next query; false where POV's loop ends instead (the rest of the way is
     // within the tolerance, or the surface bound is reached). t_max: the query's reach.
@@ -82,6 +83,10 @@ public:
     bool cross(const Hit& hit, double depth) {
         if (skipping_clear_ && skipping_clear_->near_clear_object(hit.point)) {
             gave_up_ = true;
+            return false;
+        }
+        if (refracted_ && refracts_for(hit.photons, *refracted_)) {
+            filter_ = glm::dvec3(0);
             return false;
         }
         const SurfacePoint uv_only = uv_surface(hit);
@@ -136,6 +141,7 @@ private:
     glm::dvec3 filter_{1};
     double solid_length_ = 0;
     const Intersector* skipping_clear_;
+    const scene::LightPhotons* refracted_;
     int steps_ = 0;
     int crossings_ = 0;
     bool gave_up_ = false;
@@ -188,15 +194,16 @@ void step_through(const Intersector& geometry, Query query, const glm::dvec3& po
 
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
-                         TraceCounters& counters, double* solid_length) {
+                         TraceCounters& counters, double* solid_length,
+                         const scene::LightPhotons* refracted) {
     // Most shadow rays never come near a clear object's surface: skipping those objects spares
-    // their intersections and textures.
-    if (geometry.has_clear_objects() && !solid_length) {
-        ShadowWalk skipping(point, dir, distance, interiors, counters, &geometry);
+    // their intersections and textures (not where a clear photon target blocks the light).
+    if (geometry.has_clear_objects() && !solid_length && !refracted) {
+        ShadowWalk skipping(point, dir, distance, interiors, counters, &geometry, nullptr);
         step_through(geometry, Query::ShadowSkipClear, point, skipping);
         if (!skipping.gave_up()) return skipping.filter();
     }
-    ShadowWalk all(point, dir, distance, interiors, counters, nullptr);
+    ShadowWalk all(point, dir, distance, interiors, counters, nullptr, refracted);
     if (!solid_length && geometry.opaque_only(Query::Shadow)) {
         // The walk would stop, black, at its first surface: any surface within its first
         // query's reach decides, and an occlusion test finds one sooner than the nearest.

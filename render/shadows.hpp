@@ -21,9 +21,12 @@ bool clear_for_shadows(const scene::Interior* interior);
 // interior list and toggles it at every transparent surface, so a transparent solid filters
 // once when entered and once when left. With `solid_length`, every object is walked (none
 // skipped as clear) and it receives how much of the way lies inside solid (non-hollow)
-// objects, where there is no fog.
+// objects, where there is no fog. With `refracted` (the light's photon flags, where a photon
+// map lights the point), a photon target that refracts the light's photons blocks it all:
+// its caustic takes the place of the light it lets through (POV-Ray).
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
-                         TraceCounters& counters, double* solid_length = nullptr);
+                         TraceCounters& counters, double* solid_length = nullptr,
+                         const scene::LightPhotons* refracted = nullptr);
 
 }  // namespace lumen::render

@@ -12,6 +12,7 @@
 #include "render/media.hpp"
 #include "render/normal.hpp"
 #include "render/pattern.hpp"
+#include "render/photons/photon_flags.hpp"
 #include "render/pigment.hpp"
 #include "render/shadows.hpp"
 #include "render/shapes/blob.hpp"
@@ -31,8 +32,6 @@ double max_abs(const glm::dvec3& c) {
     return std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
 }
 
-double ior_of(const scene::Interior* in) { return in ? in->ior : 1.0; }
-
 bool object_has_media(const scene::Object& o) {
     if (o.interior && !o.interior->media.empty()) return true;
     if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
@@ -50,24 +49,7 @@ bool scene_has_interior_media(const scene::Scene& scene) {
 // Where a ray goes when it crosses the surface of `hit`'s object: the new interior list and
 // the ratio of refractive indices.
 double cross_surface(const InteriorList& before, const Hit& hit, InteriorList& after) {
-    after = before;
-    const double ior = ior_of(hit.interior);
-    const int at = after.find(hit.interior_id);
-    if (after.empty()) {
-        after.push(hit.interior_id, hit.interior, hit.hollow);
-        return 1.0 / ior;
-    }
-    if (at == after.size() - 1) {
-        after.remove_at(at);
-        return ior / (after.empty() ? 1.0 : ior_of(after.last().interior));
-    }
-    if (at >= 0) {
-        after.remove_at(at);
-        return 1.0;
-    }
-    const double eta = ior_of(after.last().interior) / ior;
-    after.push(hit.interior_id, hit.interior, hit.hollow);
-    return eta;
+    return cross_interface(before, hit.interior_id, hit.interior, hit.hollow, after);
 }
 
 // Single patterned texture whose entries are shaded separately and blended.
@@ -98,14 +80,7 @@ struct Tracer::Context {
 Tracer::Tracer(const RenderFrame& frame, const TraceOptions& options)
     : scene_(frame.scene()), geometry_(frame.geometry()), options_(options) {
     init(frame.lights());
-    if (!media_) return;
-    const Geometry& g = frame.geometry();
-    for (size_t i = 0; i < g.placed_objects().size(); ++i) {
-        const scene::Object* o = g.placed_objects()[i].object;
-        if (!o || !g.inside_placed(i, scene_.camera.location)) continue;
-        const scene::Interior* in = o->interior ? &*o->interior : nullptr;
-        camera_interiors_.push(in ? static_cast<const void*>(in) : o, in, o->hollow);
-    }
+    camera_interiors_ = frame.geometry().interiors_around(scene_.camera.location);
 }
 
 Tracer::Tracer(const scene::Scene& scene, const Intersector& geometry, const TraceOptions& options)
@@ -127,6 +102,7 @@ void Tracer::init(const std::vector<LightSource>& lights) {
     env_.ambient_off = scene.globals.radiosity.has_value() && scene.language_version >= 3.7 &&
                        options.quality >= 9;
     env_.quality = options.quality;
+    env_.photon_map = options.photons && !options.photons->surface.empty();
     max_level_ = std::clamp(scene.globals.max_trace_level, 1, 256);
     adc_bailout_ = scene.globals.adc_bailout;
     legacy_opacity_ = scene.language_version < 3.7;
@@ -286,6 +262,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     // Relative IOR across this surface, only needed by fresnel reflection.
     InteriorList beyond;
     const double eta = cross_surface(*ctx.interiors, hit, beyond);
+    const double fresnel_ior = fresnel_relative_ior(*ctx.interiors, hit.interior_id, eta);
 
     struct PendingReflection {
         glm::dvec3 colour, normal;
@@ -302,6 +279,9 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
     double top_film = 0;            // the top layer's irid film thickness
     glm::dvec3 indirect(0);  // fetched once per hit, shared by the layers
     bool have_indirect = false;
+    const bool photons = env_.photon_map && collects_photons(hit.photons);
+    thread_local GatheredPhotons gathered;  // once per hit, used before any ray is spawned
+    bool have_photons = false;
     for (int i = 0; i < layers.count(); ++i) {
         const ResolvedLayer& layer = layers[i];
         SurfaceSample s;
@@ -328,10 +308,20 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.opacity = legacy_opacity_ ? 1 - (c.f * std::max({c.r, c.g, c.b}) + c.t) : 1 - c.f - c.t;
         s.finish = layer.finish;
         s.double_illuminate = double_illuminate;
+        s.collects_photons = collects_photons(hit.photons);
         if (layer.finish->irid_amount > 0)  // once per layer: lights and reflection share it
             s.film_thickness = irid_thickness(*layer.finish, s.point, env_.noise_generator);
         if (i == 0) top_film = s.film_thickness;
         out.rgb += filter * local_light(s, env_, *ctx.interiors, state);
+        const scene::Finish& lf = *layer.finish;
+        if (photons && quality >= 5 &&
+            (lf.diffuse > 0 || lf.diffuse_back > 0 || lf.phong > 0 || lf.specular > 0)) {
+            if (!have_photons)
+                options_.photons->surface.gather_adaptive(hit.point, raw_n, options_.photons->gather,
+                                                          gathered);
+            have_photons = true;
+            out.rgb += filter * photon_light(s, gathered);
+        }
         if (options_.indirect && layer.finish->diffuse > 0 && quality >= 9) {
             // Radiosity in place of ambient: diffuse × pigment × incident indirect light.
             if (!have_indirect) indirect = options_.indirect->incident(hit, raw_n, state);
@@ -340,7 +330,7 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         }
 
         if (quality >= 8) {
-            Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), 1.0 / eta, rgb);
+            Reflectivity r = reflectivity(*layer.finish, -glm::dot(d, s.normal), fresnel_ior, rgb);
             if (r.any() && layer.finish->irid_amount > 0) {
                 // POV's film tints the reflection too, the mirror direction as the light's.
                 const double cos_v = glm::dot(s.normal, d);

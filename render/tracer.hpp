@@ -8,6 +8,7 @@
 #include "render/intersector.hpp"
 #include "render/lights.hpp"
 #include "render/normal_frame.hpp"
+#include "render/photons/photon_pass.hpp"
 #include "render/shading.hpp"
 #include "render/trace_state.hpp"
 #include "scene/scene.hpp"
@@ -24,6 +25,7 @@ struct TraceOptions {
     int quality = 9;
     bool alpha = false;  // +UA: the background is transparent
     const IndirectLight* indirect = nullptr;  // radiosity; null: none
+    const PhotonPass* photons = nullptr;      // the photon map; null: none
 };
 
 class RenderFrame;
@@ -71,8 +73,8 @@ private:
     std::vector<LightSource> own_lights_;  // prepared here when no frame holds them
     LightingEnv env_;
     bool media_ = false;  // the scene has media (in an interior or the atmosphere)
-    // With media: the interiors around the camera, where primary rays start (POV-Ray tests
-    // every object for the camera inside it).
+    // The interiors around the camera, where primary rays start (POV-Ray tests every object
+    // for the camera inside it: fog, media and fresnel reflection depend on them).
     InteriorList camera_interiors_;
     std::vector<const scene::Media*> atmosphere_;
     int max_level_;

@@ -32,6 +32,7 @@ struct Light {
     bool media_interaction = true, media_attenuation = false;
     ObjectPtr looks_like;          // already translated to the light, flagged no_shadow
     ObjectPtr projected_through;
+    LightPhotons photons;
     std::vector<Unsupported> unsupported;
     SourceLoc loc;
 };

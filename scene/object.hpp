@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "scene/shape_list.hpp"
+#include "scene/photons.hpp"
 #include "scene/shapes.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
@@ -50,6 +51,9 @@ struct Object {
          no_reflection = false, double_illuminate = false, no_radiosity = false;
     // Object-level `uv_mapping`: every texture given after it is uv-mapped (Pattern::uv_mapping).
     bool uv_mapping = false;
+    std::optional<ObjectPhotons> photons;  // its photons { } block (CSG children inherit it)
+    // A union that is a photon target is shot member by member unless `split_union off`.
+    bool split_union = true;
     std::vector<Unsupported> unsupported;  // unsupported modifiers used on this object
     SourceLoc loc;
 };

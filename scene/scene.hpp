@@ -8,6 +8,7 @@
 #include "scene/light.hpp"
 #include "scene/media.hpp"
 #include "scene/object.hpp"
+#include "scene/photons.hpp"
 
 namespace lumen::scene {
 
@@ -34,6 +35,7 @@ struct GlobalSettings {
     int noise_generator = 2;
     int number_of_waves = 10;
     std::optional<RadiositySettings> radiosity;
+    std::optional<PhotonSettings> photons;  // a photons { } block: the photon pass runs
     std::vector<Unsupported> unsupported;  // photons, subsurface, ...
 };
 

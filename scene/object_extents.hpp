@@ -6,7 +6,7 @@
 
 #include "scene/object.hpp"
 
-namespace lumen::interp {
+namespace lumen::scene {
 
 struct Extents {
     glm::dvec3 min, max;
@@ -15,4 +15,4 @@ struct Extents {
 // Throws LumenError for a shape lumen does not model (the object's unsupported feature).
 Extents object_extents(const scene::Object& object);
 
-}  // namespace lumen::interp
+}  // namespace lumen::scene

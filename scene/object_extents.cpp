@@ -1,7 +1,7 @@
 // POV-Ray's parse-time bounding boxes, measured with min_extent/max_extent on every shape kind
 // lumen models. Infinite shapes (planes) get POV's ±1e10; CSG intersections clip with the
 // children's boxes and with axis-aligned planes, differences with their first child.
-#include "interp/object_extents.hpp"
+#include "scene/object_extents.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,9 +10,8 @@
 #include <glm/geometric.hpp>
 
 #include "base/diagnostics.hpp"
-#include "interp/conversions.hpp"
 
-namespace lumen::interp {
+namespace lumen::scene {
 namespace {
 
 constexpr double kHuge = 1e10;  // POV-Ray's BOUND_HUGE / 2: an unbounded object's box
@@ -283,7 +282,7 @@ struct ShapeBoxes {
     }
     ShapeBox operator()(const scene::Csg&) const { return {}; }
     ShapeBox operator()(const scene::UnsupportedShape& u) const {
-        unsupported_error(u.what);
+        throw LumenError(u.what.loc, "'" + u.what.feature + "' is not supported yet");
     }
 };
 
@@ -376,4 +375,4 @@ Extents object_extents(const scene::Object& object) {
     return out;
 }
 
-}  // namespace lumen::interp
+}  // namespace lumen::scene
