@@ -22,7 +22,7 @@ check() {  # name, lumen arguments...
         grep -A30 'WARNING: ThreadSanitizer' "$work/$name.log" | head -60
     fi
 }
-for scene in showcase glass lights csg patterns antialias irid isosurface media image_map; do
+for scene in showcase glass lights csg patterns antialias irid isosurface media image_map caustics; do
     check "$scene" "$root/examples/$scene.pov" +W96 +H72 +A0.3
 done
 check animation "$root/examples/animation.pov" +W48 +H36 +KFI1 +KFF3
