@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "interp/dump_pattern.hpp"
+#include "interp/dump_photons.hpp"
 
 namespace lumen::interp {
 
@@ -175,48 +176,6 @@ Json interior(const scene::Interior& in) {
     put_if(o, "fade_power", in.fade_power, d.fade_power);
     put_if(o, "fade_colour", in.fade_colour, d.fade_colour);
     if (!in.media.empty()) o.put("media", Json::num(double(in.media.size())));
-    return o;
-}
-
-const char* toggle_text(scene::PhotonToggle t) {
-    return t == scene::PhotonToggle::On ? "on" : t == scene::PhotonToggle::Off ? "off" : "unset";
-}
-
-void put_toggle(Json& o, const char* key, scene::PhotonToggle t) {
-    if (t != scene::PhotonToggle::Unset) o.put(key, Json::str(toggle_text(t)));
-}
-
-Json object_photons(const scene::ObjectPhotons& p) {
-    const scene::ObjectPhotons d;
-    Json o;
-    put_if(o, "target", p.target, d.target);
-    put_if(o, "target_mult", p.target_mult, d.target_mult);
-    put_toggle(o, "refraction", p.refraction);
-    put_toggle(o, "reflection", p.reflection);
-    put_if(o, "collect", p.collect, d.collect);
-    put_if(o, "pass_through", p.pass_through, d.pass_through);
-    return o;
-}
-
-Json global_photons(const scene::PhotonSettings& p) {
-    const scene::PhotonSettings d;
-    Json o;
-    put_if(o, "spacing", p.spacing, d.spacing);
-    put_if(o, "count", double(p.count), double(d.count));
-    put_if(o, "gather_min", double(p.gather_min), double(d.gather_min));
-    put_if(o, "gather_max", double(p.gather_max), double(d.gather_max));
-    put_if(o, "media_steps", double(p.media_steps), double(d.media_steps));
-    put_if(o, "media_factor", p.media_factor, d.media_factor);
-    put_if(o, "jitter", p.jitter, d.jitter);
-    put_if(o, "max_trace_level", double(p.max_trace_level), double(d.max_trace_level));
-    put_if(o, "adc_bailout", p.adc_bailout, d.adc_bailout);
-    put_if(o, "autostop", p.autostop, d.autostop);
-    put_if(o, "expand_percent", p.expand_percent, d.expand_percent);
-    put_if(o, "expand_min", double(p.expand_min), double(d.expand_min));
-    put_if(o, "radius", p.radius, d.radius);
-    put_if(o, "radius_mult", p.radius_mult, d.radius_mult);
-    put_if(o, "media_radius", p.media_radius, d.media_radius);
-    put_if(o, "media_radius_mult", p.media_radius_mult, d.media_radius_mult);
     return o;
 }
 
@@ -604,13 +563,7 @@ Json light(const scene::Light& l) {
     put_if(o, "media_attenuation", l.media_attenuation, d.media_attenuation);
     if (l.looks_like) o.put("looks_like", object(*l.looks_like));
     if (l.projected_through) o.put("projected_through", object(*l.projected_through));
-    {
-        Json ph;
-        put_toggle(ph, "refraction", l.photons.refraction);
-        put_toggle(ph, "reflection", l.photons.reflection);
-        put_if(ph, "area_light", l.photons.area_light, false);
-        put_nonempty(o, "photons", ph);
-    }
+    put_nonempty(o, "photons", light_photons(l.photons));
     Json u = Json::array();
     for (const auto& x : l.unsupported) u.push(unsupported_text(x));
     put_nonempty(o, "unsupported", u);
