@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Usage: bench/render_vs_povray.sh [LUMEN] [THREADS] [REPEATS] [SCENE...]
-# Renders each examples/*.pov (or the SCENEs given) at 800x600 +A0.3 with lumen and with
+# Renders each examples/*.pov (or the SCENEs given) at 800x600 +A0.3 (SIZE=640x480 in the
+# environment for another size) with lumen and with
 # POV-Ray (same +WT thread count, default: all cores), REPEATS times each (default 3, the two
 # renderers alternating), and prints per scene the median wall and CPU (user+sys) seconds of
 # each and the ratio of the median walls lumen/POV-Ray; the last line gives the worst and the
@@ -16,7 +17,8 @@ scenes=("$@")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # POV-Ray's default anti-aliasing (AM1, depth 3, jitter 1.0): lumen's jitter is POV's.
-opts=(+W800 +H600 +A0.3 "+WT$threads")
+size=${SIZE:-800x600}
+opts=("+W${size%x*}" "+H${size#*x}" +A0.3 "+WT$threads")
 
 measure() {  # prints "wall cpu" for a command run in $work
     local TIMEFORMAT='%R %U %S' t

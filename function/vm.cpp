@@ -73,72 +73,83 @@ double run_in(const RegisterCode& rc, const Program& p, const double* args,
         std::memcpy(r, p.consts.data(), sizeof(double) * size_t(rc.frame_consts));
     double* const a = r + rc.frame_consts;
     for (int i = 0; i < rc.args; ++i) a[i] = i < p.params ? args[i] : 0.0;
-    for (const RInstr* in = rc.code.data();; ++in) {
-        switch (in->op) {
-            case ROp::Move: r[in->d] = r[in->s]; break;
-            case ROp::LoadConst: r[in->d] = p.consts[in->a]; break;
-            case ROp::Add: r[in->d] = r[in->s] + r[in->t]; break;
-            case ROp::Sub: r[in->d] = r[in->s] - r[in->t]; break;
-            case ROp::Mul: r[in->d] = r[in->s] * r[in->t]; break;
-            case ROp::Div: r[in->d] = r[in->s] / r[in->t]; break;
-            case ROp::Neg: r[in->d] = -r[in->s]; break;
-            case ROp::Lt: r[in->d] = r[in->s] < r[in->t]; break;
-            case ROp::Le: r[in->d] = r[in->s] <= r[in->t]; break;
-            case ROp::Eq: r[in->d] = r[in->s] == r[in->t]; break;
-            // POV implements these as "not less" and "not equal": NaN gives 1.
-            case ROp::Ne: r[in->d] = !(r[in->s] == r[in->t]); break;
-            case ROp::Ge: r[in->d] = !(r[in->s] < r[in->t]); break;
-            case ROp::Gt: r[in->d] = !(r[in->s] <= r[in->t]); break;
-            case ROp::And: r[in->d] = (r[in->s] != 0) && (r[in->t] != 0); break;
-            case ROp::Or: r[in->d] = (r[in->s] != 0) || (r[in->t] != 0); break;
-            case ROp::Math1: r[in->d] = math1(Math1(in->a), r[in->s]); break;
-            case ROp::Math2: r[in->d] = math2(Math2(in->a), r[in->s], r[in->t]); break;
-            case ROp::Min: r[in->d] = pov_min(r[in->s], r[in->t]); break;
-            case ROp::Max: r[in->d] = pov_max(r[in->s], r[in->t]); break;
-            case ROp::Jump: in = rc.code.data() + in->a - 1; break;
-            case ROp::JumpIfNotNeg:
-                if (!(r[in->s] < 0)) in = rc.code.data() + in->a - 1;
-                break;
-            case ROp::JumpIfNotZero:
-                if (!(r[in->s] == 0)) in = rc.code.data() + in->a - 1;
-                break;
-            case ROp::JumpIfGreater:
-                if (!(r[in->s] <= r[in->t])) in = rc.code.data() + in->a - 1;
-                break;
-            case ROp::Internal:
-                r[in->d] = internal(int(in->a), r + in->s, context.noise_generator);
-                break;
-            case ROp::External: {
-                double out[5] = {0, 0, 0, 0, 0};
-                if (context.host) context.host->evaluate(p.externals[in->a], r + in->s, out);
-                else out[0] = out[1] = out[2] = out[3] = out[4] = std::nan("");
-                r[in->d] = member(out, in->c == kMemberAsked ? component : in->c);
-                break;
-            }
-            case ROp::Transform: {
-                const double* m = p.consts.data() + in->a;
-                const double* v = r + in->s;
-                double out[3];
-                for (int i = 0; i < 3; ++i) out[i] = m[4 * i] * v[0] + m[4 * i + 1] * v[1] + m[4 * i + 2] * v[2] + m[4 * i + 3];
-                const int c = in->c == kMemberAsked ? component : in->c;
-                r[in->d] = c < 3 ? out[c] : 0;
-                break;
-            }
-            case ROp::Spline: {
-                const std::array<double, 5> v = p.splines[in->a]->at(r[in->s]);
-                r[in->d] = member(v.data(), in->c == kMemberAsked ? component : in->c);
-                break;
-            }
-            case ROp::Call:
-                // Recursion is refused when functions are compiled; the depth only guards
-                // against a chain longer than POV-Ray allows.
-                r[in->d] = depth < kMaxCallDepth
-                               ? run(*p.callees[in->a], r + in->s, context, in->c, depth + 1)
-                               : std::nan("");
-                break;
-            case ROp::Return: return in->a ? 0.0 : r[in->s];
-        }
-    }
+    // Threaded dispatch (GCC's labels as values): each operation ends in its own jump to the
+    // next, which the branch predictor learns per operation, not once for the whole loop.
+    static constexpr void* kLabels[] = {
+        &&Move, &&LoadConst, &&Add, &&Sub, &&Mul, &&Div, &&Neg, &&Lt, &&Le, &&Eq, &&Ne, &&Ge,
+        &&Gt, &&And, &&Or, &&Math1, &&Math2, &&Min, &&Max, &&Jump, &&JumpIfNotNeg,
+        &&JumpIfNotZero, &&JumpIfGreater, &&Internal, &&Call, &&External, &&Transform, &&Spline,
+        &&Return};
+    static_assert(std::size(kLabels) == size_t(ROp::Return) + 1);
+    const RInstr* const code = rc.code.data();
+    const RInstr* in = code;
+#define LUMEN_NEXT goto* kLabels[size_t((++in)->op)]
+#define LUMEN_JUMP(to) goto* kLabels[size_t((in = code + (to))->op)]
+    goto* kLabels[size_t(in->op)];
+Move: r[in->d] = r[in->s]; LUMEN_NEXT;
+LoadConst: r[in->d] = p.consts[in->a]; LUMEN_NEXT;
+Add: r[in->d] = r[in->s] + r[in->t]; LUMEN_NEXT;
+Sub: r[in->d] = r[in->s] - r[in->t]; LUMEN_NEXT;
+Mul: r[in->d] = r[in->s] * r[in->t]; LUMEN_NEXT;
+Div: r[in->d] = r[in->s] / r[in->t]; LUMEN_NEXT;
+Neg: r[in->d] = -r[in->s]; LUMEN_NEXT;
+Lt: r[in->d] = r[in->s] < r[in->t]; LUMEN_NEXT;
+Le: r[in->d] = r[in->s] <= r[in->t]; LUMEN_NEXT;
+Eq: r[in->d] = r[in->s] == r[in->t]; LUMEN_NEXT;
+// POV implements these as "not less" and "not equal": NaN gives 1.
+Ne: r[in->d] = !(r[in->s] == r[in->t]); LUMEN_NEXT;
+Ge: r[in->d] = !(r[in->s] < r[in->t]); LUMEN_NEXT;
+Gt: r[in->d] = !(r[in->s] <= r[in->t]); LUMEN_NEXT;
+And: r[in->d] = (r[in->s] != 0) && (r[in->t] != 0); LUMEN_NEXT;
+Or: r[in->d] = (r[in->s] != 0) || (r[in->t] != 0); LUMEN_NEXT;
+Math1: r[in->d] = math1(fn::Math1(in->a), r[in->s]); LUMEN_NEXT;
+Math2: r[in->d] = math2(fn::Math2(in->a), r[in->s], r[in->t]); LUMEN_NEXT;
+Min: r[in->d] = pov_min(r[in->s], r[in->t]); LUMEN_NEXT;
+Max: r[in->d] = pov_max(r[in->s], r[in->t]); LUMEN_NEXT;
+Jump: LUMEN_JUMP(in->a);
+JumpIfNotNeg:
+    if (!(r[in->s] < 0)) LUMEN_JUMP(in->a);
+    LUMEN_NEXT;
+JumpIfNotZero:
+    if (!(r[in->s] == 0)) LUMEN_JUMP(in->a);
+    LUMEN_NEXT;
+JumpIfGreater:
+    if (!(r[in->s] <= r[in->t])) LUMEN_JUMP(in->a);
+    LUMEN_NEXT;
+Internal:
+    r[in->d] = internal(int(in->a), r + in->s, context.noise_generator);
+    LUMEN_NEXT;
+External: {
+    double out[5] = {0, 0, 0, 0, 0};
+    if (context.host) context.host->evaluate(p.externals[in->a], r + in->s, out);
+    else out[0] = out[1] = out[2] = out[3] = out[4] = std::nan("");
+    r[in->d] = member(out, in->c == kMemberAsked ? component : in->c);
+    LUMEN_NEXT;
+}
+Transform: {
+    const double* m = p.consts.data() + in->a;
+    const double* v = r + in->s;
+    double out[3];
+    for (int i = 0; i < 3; ++i) out[i] = m[4 * i] * v[0] + m[4 * i + 1] * v[1] + m[4 * i + 2] * v[2] + m[4 * i + 3];
+    const int c = in->c == kMemberAsked ? component : in->c;
+    r[in->d] = c < 3 ? out[c] : 0;
+    LUMEN_NEXT;
+}
+Spline: {
+    const std::array<double, 5> v = p.splines[in->a]->at(r[in->s]);
+    r[in->d] = member(v.data(), in->c == kMemberAsked ? component : in->c);
+    LUMEN_NEXT;
+}
+Call:
+    // Recursion is refused when functions are compiled; the depth only guards against a chain
+    // longer than POV-Ray allows.
+    r[in->d] = depth < kMaxCallDepth ? run(*p.callees[in->a], r + in->s, context, in->c, depth + 1)
+                                     : std::nan("");
+    LUMEN_NEXT;
+Return:
+    return in->a ? 0.0 : r[in->s];
+#undef LUMEN_NEXT
+#undef LUMEN_JUMP
 }
 
 // Small frames (most functions) take little of the C++ stack, which chains of calls share.

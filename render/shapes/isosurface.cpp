@@ -42,9 +42,24 @@ struct Search {
     double sign = 1;  // +1: looking for V < 0 (entering); -1: for V > 0
     double found = 0;  // the steepest |f(b) - f(a)| per object-space unit met
     double fmin = 0;   // the lowest f met by the current root search
+    // The function's last few values along this ray. The algorithm asks again for points it
+    // has just evaluated (the container's ends, a root for its normal); the function is pure,
+    // so a value looked up here is the value an evaluation would give.
+    struct Known {
+        double t = std::nan(""), F = 0;
+    };
+    Known known[4] = {};
+    unsigned next = 0;
 
-    double V(double t) const { return F(s, r.at(t)) - s.iso.threshold; }
-    double f(double t) const { return sign * V(t); }
+    double Fat(double t) {
+        for (const Known& k : known)
+            if (k.t == t) return k.F;
+        const double v = F(s, r.at(t));
+        known[next++ & 3] = {t, v};
+        return v;
+    }
+    double V(double t) { return Fat(t) - s.iso.threshold; }
+    double f(double t) { return sign * V(t); }
 
     // POV's recursive bisection: an interval is split while the ends' values and the gradient
     // bound allow a root inside; the depth is the far end of the first leaf (narrower than the
@@ -102,12 +117,13 @@ struct Search {
     }
 };
 
-glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p) {
+// The normal at object-space point p, where the function's value is f0.
+glm::dvec3 function_normal(const IsosurfaceShape& s, const glm::dvec3& p, double f0) {
     const scene::Isosurface& iso = s.iso;
     const scene::Container& c = iso.container;
     if (c.sphere && std::fabs(glm::length(p - c.center) - c.radius) < 1e-10)
         return glm::normalize(p - c.center);
-    const double f0 = F(s, p), A = iso.accuracy;
+    const double A = iso.accuracy;
     const glm::dvec3 n(F(s, p + glm::dvec3(A, 0, 0)) - f0, F(s, p + glm::dvec3(0, A, 0)) - f0,
                        F(s, p + glm::dvec3(0, 0, A)) - f0);
     if (n == glm::dvec3(0)) return {1, 0, 0};
@@ -175,7 +191,7 @@ int isosurface_hits(const IsosurfaceShape& s, const LocalRay& r, IsoHit* hits) {
     while (n < iso.max_trace) {
         double root;
         if (!search.find_root(t1, t2, root)) break;
-        record(root, function_normal(s, r.at(root)));
+        record(root, function_normal(s, r.at(root), search.Fat(root)));
         t1 = root + 5 * A;
         if (t2 - t1 < A) break;
         search.sign = -search.sign;
