@@ -28,17 +28,19 @@ public:
         mirrored_ = glm::determinant(glm::dmat3(xf_.m)) < 0;
     }
 
-    // A local-space polygon (front by the right-hand rule) subdivided in world space.
-    void polygon(const std::vector<glm::dvec3>& local) {
+    // A local-space polygon (front by the right-hand rule) subdivided in world space;
+    // `texture`: a mesh face's texture_list entry.
+    void polygon(const std::vector<glm::dvec3>& local, int texture = -1) {
         std::vector<glm::dvec3> world;
         for (const auto& p : local) world.push_back(xf_.point(p));
-        world_polygon(std::move(world));
+        world_polygon(std::move(world), false, texture);
     }
 
     // `oriented`: the front already faces the right way in world space (no mirror fix-up).
-    void world_polygon(std::vector<glm::dvec3> world, bool oriented = false) {
+    void world_polygon(std::vector<glm::dvec3> world, bool oriented = false, int texture = -1) {
         if ((mirrored_ && !oriented) != opt_.inward) std::reverse(world.begin(), world.end());
-        const Patch p = make_patch(std::move(world), props_.rho, props_.emission, props_.object);
+        Patch p = make_patch(std::move(world), props_.rho, props_.emission, props_.object);
+        p.texture = texture;
         if (p.degenerate()) return;
         for (auto& e : subdivide(p, opt_.max_edge))
             if (!e.degenerate()) out.push_back(std::move(e));
@@ -251,7 +253,9 @@ void mesh_faces(const scene::Mesh& m, Builder& b) {
     for (const auto& f : m.faces) {
         if (f.v[0] < 0 || f.v[1] < 0 || f.v[2] < 0 || f.v[0] >= n || f.v[1] >= n || f.v[2] >= n)
             continue;
-        b.polygon({m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]});
+        // The face's texture as the renderer takes it: its first vertex's.
+        const int texture = f.tex[0] >= 0 && size_t(f.tex[0]) < m.textures.size() ? f.tex[0] : -1;
+        b.polygon({m.vertices[f.v[0]], m.vertices[f.v[1]], m.vertices[f.v[2]]}, texture);
     }
 }
 

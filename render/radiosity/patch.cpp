@@ -47,10 +47,13 @@ Patch make_patch(std::vector<glm::dvec3> vertices, glm::dvec3 rho, glm::dvec3 em
     return p;
 }
 
-Patch flipped(const Patch& p) {
-    std::vector<glm::dvec3> v(p.vertices.rbegin(), p.vertices.rend());
-    return make_patch(std::move(v), p.rho, p.emission, p.object);
+Patch part_of(const Patch& whole, std::vector<glm::dvec3> vertices) {
+    Patch p = make_patch(std::move(vertices), whole.rho, whole.emission, whole.object);
+    p.texture = whole.texture;
+    return p;
 }
+
+Patch flipped(const Patch& p) { return part_of(p, {p.vertices.rbegin(), p.vertices.rend()}); }
 
 namespace {
 
@@ -113,8 +116,7 @@ void subdivide_quad(const Patch& p, double max_edge, std::vector<Patch>& out) {
     };
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < m; ++i)
-            out.push_back(make_patch({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
-                                     p.rho, p.emission, p.object));
+            out.push_back(part_of(p, {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}));
 }
 
 void subdivide_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
@@ -127,11 +129,8 @@ void subdivide_triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dve
     };
     for (int j = 0; j < k; ++j)
         for (int i = 0; i + j < k; ++i) {
-            out.push_back(make_patch({at(i, j), at(i + 1, j), at(i, j + 1)}, p.rho, p.emission,
-                                     p.object));
-            if (i + j + 1 < k)
-                out.push_back(make_patch({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, p.rho,
-                                         p.emission, p.object));
+            out.push_back(part_of(p, {at(i, j), at(i + 1, j), at(i, j + 1)}));
+            if (i + j + 1 < k) out.push_back(part_of(p, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}));
         }
 }
 

@@ -18,6 +18,7 @@ struct Patch {
     glm::dvec3 rho{0};       // diffuse reflectance per channel, in [0, 1)
     glm::dvec3 emission{0};  // emitted radiosity E per channel
     int object = -1;         // index of the scene object it came from (-1: none)
+    int texture = -1;        // a mesh face's entry in its texture_list (-1: the object's texture)
 
     bool degenerate() const { return !(area > 0); }
 };
@@ -27,6 +28,9 @@ struct Patch {
 // normal (0,0,1) rather than NaN.
 Patch make_patch(std::vector<glm::dvec3> vertices, glm::dvec3 rho = glm::dvec3(0),
                  glm::dvec3 emission = glm::dvec3(0), int object = -1);
+
+// A piece of `whole` with these vertices: material, object and texture are inherited.
+Patch part_of(const Patch& whole, std::vector<glm::dvec3> vertices);
 
 // The same patch facing the other way (vertex order reversed).
 Patch flipped(const Patch& p);

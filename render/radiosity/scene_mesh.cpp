@@ -70,7 +70,16 @@ private:
     std::map<WeldKey, uint32_t> index_;
 };
 
+// The texture a patch shows: a mesh face's own (texture_list) or the object's.
+const scene::LayeredTexture* patch_texture(const Patch& p, const PlacedObject& piece) {
+    if (p.texture >= 0)
+        if (const auto* m = std::get_if<scene::Mesh>(&piece.object->shape))
+            return &m->textures[size_t(p.texture)];
+    return piece.texture;
+}
+
 void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const PlacedObject& piece) {
+    const scene::LayeredTexture* texture = patch_texture(p, piece);
     // Quads and fans become triangles: values interpolate barycentrically.
     const size_t n = p.vertices.size();
     for (size_t k = 1; k + 1 < n; ++k) {
@@ -82,8 +91,8 @@ void add_patch(SceneMesh& mesh, Welder& welder, const Patch& p, const PlacedObje
         e.normal = cr / len;
         e.area = 0.5 * len;
         e.object = piece.object;
-        e.v = {welder.vertex(a, p.normal, piece.texture), welder.vertex(b, p.normal, piece.texture),
-               welder.vertex(c, p.normal, piece.texture)};
+        e.v = {welder.vertex(a, p.normal, texture), welder.vertex(b, p.normal, texture),
+               welder.vertex(c, p.normal, texture)};
         mesh.elements.push_back(e);
     }
 }
