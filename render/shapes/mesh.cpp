@@ -138,7 +138,7 @@ bool inside(const MeshShape& s, const glm::dvec3& p) {
     int crossings = 0;
     for_candidates(s, r, 0.0, tmax, [&](uint32_t i) {
         double t, u, v;
-        if (hit_triangle(s.tris[i], r, 0.0, Aabb::inf, t, u, v)) ++crossings;
+        if (hit_triangle(s.tris[i], r, 0.0, Aabb::inf, t, u, v, 0)) ++crossings;
     });
     return crossings % 2 == 1;
 }

@@ -302,6 +302,37 @@ TEST(Triangle, TwoSidedFlatAndSmooth) {
     EXPECT_NEAR(glm::dot(s->normal, expect), 1, 1e-12);
 }
 
+// Rays aimed at points of an edge two triangles share (a fan around an axis, as a lathed
+// mesh has, seen by rays in the axis's plane) hit one of the two: no crack lets them through.
+TEST(Triangle, RaysThroughASharedEdgeHitOneSide) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int strict_misses = 0, misses = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::dvec3 a(U(rng), U(rng), U(rng)), b(U(rng), U(rng), U(rng));
+        const glm::dvec3 c = a + glm::dvec3(U(rng), U(rng), U(rng));
+        const glm::dvec3 d = a + glm::dvec3(U(rng), U(rng), U(rng));
+        TriangleCore t1, t2;
+        if (!make_triangle_core(a, b, c, t1) || !make_triangle_core(b, a, d, t2)) continue;
+        // c and d on opposite sides of the edge, as in a surface.
+        const glm::dvec3 n = glm::cross(b - a, glm::cross(c - a, b - a));
+        if (glm::dot(n, c - a) * glm::dot(n, d - a) >= 0) continue;
+        const double s = 0.5 + 0.4 * U(rng);
+        const glm::dvec3 target = a + s * (b - a);
+        const glm::dvec3 origin(U(rng) * 5, U(rng) * 5, U(rng) * 5);
+        const LocalRay r{origin, target - origin};
+        double t, u, v;
+        const int strict = int(hit_triangle(t1, r, 1e-6, 1e30, t, u, v, 0)) +
+                           int(hit_triangle(t2, r, 1e-6, 1e30, t, u, v, 0));
+        const int slack = int(hit_triangle(t1, r, 1e-6, 1e30, t, u, v)) +
+                          int(hit_triangle(t2, r, 1e-6, 1e30, t, u, v));
+        strict_misses += strict == 0;
+        misses += slack == 0;
+    }
+    EXPECT_GT(strict_misses, 0);  // rounding does open cracks without the slack
+    EXPECT_EQ(misses, 0);
+}
+
 TEST(Triangle, DegenerateIsSkipped) {
     scene::Triangle t;
     t.p = {glm::dvec3{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};  // collinear: zero area

@@ -18,17 +18,17 @@ bool make_triangle_core(const glm::dvec3& a, const glm::dvec3& b, const glm::dve
 }
 
 bool hit_triangle(const TriangleCore& s, const LocalRay& r, double tmin, double tmax, double& t,
-                  double& u, double& v) {
+                  double& u, double& v, double slack) {
     glm::dvec3 pvec = glm::cross(r.d, s.e2);
     double det = glm::dot(s.e1, pvec);
     if (det == 0) return false;  // ray in the triangle's plane
     double inv = 1.0 / det;
     glm::dvec3 tvec = r.o - s.p0;
     u = glm::dot(tvec, pvec) * inv;
-    if (!(u >= 0 && u <= 1)) return false;
+    if (!(u >= -slack && u <= 1 + slack)) return false;
     glm::dvec3 qvec = glm::cross(tvec, s.e1);
     v = glm::dot(r.d, qvec) * inv;
-    if (!(v >= 0 && u + v <= 1)) return false;
+    if (!(v >= -slack && u + v <= 1 + slack)) return false;
     t = glm::dot(s.e2, qvec) * inv;
     return t > tmin && t < tmax;
 }

@@ -9,9 +9,14 @@ namespace lumen::render {
 
 // The part of a triangle the Moller-Trumbore test needs.
 struct TriangleCore { glm::dvec3 p0{0}, e1{0}, e2{0}; };
-// Barycentric hit: t in (tmin, tmax), u and v the weights of vertices 1 and 2.
+// How far outside its edges (in barycentric weight) a hit still counts: a ray through an edge
+// two triangles share must hit one of them, and rounding may put it a hair outside both
+// (camera/mesh_camera's rays through the vases' axes found cracks along every meridian).
+inline constexpr double kEdgeSlack = 1e-9;
+// Barycentric hit: t in (tmin, tmax), u and v the weights of vertices 1 and 2. `slack` 0 for
+// crossing counts (inside()), where slack would count more edges twice.
 bool hit_triangle(const TriangleCore& s, const LocalRay& r, double tmin, double tmax, double& t,
-                  double& u, double& v);
+                  double& u, double& v, double slack = kEdgeSlack);
 // Null (zero-area or non-finite) triangles are skipped.
 bool make_triangle_core(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
                         TriangleCore& out);
