@@ -1,4 +1,4 @@
-// background, fog and sky_sphere (POV-Ray 3.7's rules).
+// background, fog, rainbow and sky_sphere (POV-Ray 3.7's rules).
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {
@@ -53,6 +53,37 @@ scene::Fog build_fog(ItemCursor& cur) {
         else cur.fail_unexpected(item, keywords);
     }
     return fog;
+}
+
+scene::Rainbow build_rainbow(ItemCursor& cur) {
+    static const std::vector<std::string> keywords = {
+        "direction", "angle", "width", "distance", "jitter", "up", "arc_angle", "falloff_angle",
+        "color_map", "colour_map"};
+    scene::Rainbow rainbow;
+    if (cur.next_is<std::shared_ptr<const scene::Rainbow>>())
+        rainbow = *cur.next().value.as<std::shared_ptr<const scene::Rainbow>>();
+    rainbow.loc = cur.block_loc();
+    while (!cur.at_end()) {
+        if (cur.next_is<std::shared_ptr<const ColourMapValue>>()) {  // colour_map { } or its identifier
+            rainbow.colour_map = cur.next().value.as<std::shared_ptr<const ColourMapValue>>()->entries;
+            continue;
+        }
+        const Item& item = cur.next();
+        if (item.kind != Item::Kind::Keyword) cur.fail_unexpected(item, keywords);
+        const std::string& w = item.keyword;
+        if (w == "direction") rainbow.direction = cur.expect_vector(w);
+        else if (w == "angle") rainbow.angle = cur.expect_float(w);
+        else if (w == "width") rainbow.width = cur.expect_float(w);
+        else if (w == "distance") rainbow.distance = cur.expect_float(w);
+        else if (w == "jitter") rainbow.jitter = cur.expect_float(w);
+        else if (w == "up") rainbow.up = cur.expect_vector(w);
+        else if (w == "arc_angle" || w == "falloff_angle") {
+            cur.expect_float(w);
+            // A partial arc is not built: the whole ring would be wrong, so it is refused.
+            if (!rainbow.unsupported) rainbow.unsupported = scene::Unsupported{"rainbow " + w, item.loc};
+        } else cur.fail_unexpected(item, keywords);
+    }
+    return rainbow;
 }
 
 scene::SkySphere build_sky_sphere(ItemCursor& cur) {

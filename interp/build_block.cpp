@@ -13,7 +13,7 @@ namespace {
 const std::vector<std::string> kBuilt = scene::keywords_then(scene::kShapeKeywords, {
     "object", "union", "merge", "intersection", "difference", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
     "light_source", "transform", "color_map", "colour_map", "pigment_map", "texture_map",
-    "normal_map", "fog", "sky_sphere", "media", "density", "density_map"});
+    "normal_map", "fog", "rainbow", "sky_sphere", "media", "density", "density_map"});
 // Blocks that only mean something inside a parent: returned as BlockValue.
 const std::vector<std::string> kData = {
     "reflection", "irid", "radiosity", "vertex_vectors", "normal_vectors", "uv_vectors",
@@ -35,7 +35,7 @@ const std::vector<std::string> kData = {
 const std::vector<std::string> kUnsupported = scene::keywords_then(scene::kUnsupportedShapeKeywords, {
     "subsurface",
     "density_file", "spline",
-    "function", "rainbow"});
+    "function"});
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
     return std::find(v.begin(), v.end(), s) != v.end();
@@ -163,6 +163,7 @@ Value build_block(BuildContext& ctx, const BlockValue& block) {
     if (k == "texture_map") return make(TextureMapValue{build_texture_map(cur)}, loc);
     if (k == "normal_map") return make(NormalMapValue{build_normal_map(cur)}, loc);
     if (k == "fog") return make(build_fog(cur), loc);
+    if (k == "rainbow") return make(build_rainbow(cur), loc);
     if (k == "media") return Value{build_media(cur), loc};
     if (k == "density") return Value{build_density(cur), loc};
     if (k == "density_map") return build_density_map(cur, loc);
@@ -196,6 +197,8 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
         scene.lights.push_back(*v.as<std::shared_ptr<const scene::Light>>());
     } else if (v.is<std::shared_ptr<const scene::Fog>>()) {
         scene.fogs.push_back(*v.as<std::shared_ptr<const scene::Fog>>());
+    } else if (v.is<std::shared_ptr<const scene::Rainbow>>()) {
+        scene.rainbows.push_back(*v.as<std::shared_ptr<const scene::Rainbow>>());
     } else if (v.is<scene::MediaPtr>()) {
         scene.atmosphere.push_back(v.as<scene::MediaPtr>());
     } else if (v.is<std::shared_ptr<const scene::SkySphere>>()) {
@@ -257,6 +260,8 @@ void finish_scene(BuildContext& ctx, scene::Scene& scene) {
     }
     for (const auto& f : scene.fogs)
         if (f.unsupported) out.push_back(*f.unsupported);
+    for (const auto& r : scene.rainbows)
+        if (r.unsupported) out.push_back(*r.unsupported);
     for (const auto& m : scene.atmosphere)
         for (const auto& d : m->densities) collect(d, out);
     if (scene.sky_sphere)

@@ -187,6 +187,7 @@ void transform_light(scene::Light& light, const scene::Transform& t);
 void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
                         std::vector<scene::Light>& out);
 scene::Fog build_fog(ItemCursor& cur);
+scene::Rainbow build_rainbow(ItemCursor& cur);
 // media { } and density { } (build_media.cpp). A density is a pigment whose colour scales the
 // media's coefficients.
 scene::MediaPtr build_media(ItemCursor& cur);

@@ -81,16 +81,36 @@ TEST_F(BuildScene, SkySphere) {
     EXPECT_FALSE(s.sky_sphere->transform.is_identity());
 }
 
+TEST_F(BuildScene, RainbowAndItsIdentifier) {
+    scene::Scene s = run("#declare R = rainbow { angle 42.5 width 5 distance 1e7 direction <-0.2, -0.2, 1>\n"
+                         "  jitter 0.01 colour_map { [0 rgb 1 filter 1] [0.9 rgb <1, 0.2, 0.2>] } }\n"
+                         "rainbow { R }\nrainbow { R angle 37 up z }\n");
+    ASSERT_EQ(s.rainbows.size(), 2u);
+    const scene::Rainbow& r = s.rainbows[0];
+    EXPECT_DOUBLE_EQ(r.angle, 42.5);
+    EXPECT_DOUBLE_EQ(r.width, 5);
+    EXPECT_DOUBLE_EQ(r.distance, 1e7);
+    EXPECT_DOUBLE_EQ(r.jitter, 0.01);
+    expect_vec(r.direction, {-0.2, -0.2, 1});
+    ASSERT_EQ(r.colour_map.size(), 2u);
+    EXPECT_DOUBLE_EQ(r.colour_map[1].value, 0.9);
+    EXPECT_DOUBLE_EQ(s.rainbows[1].angle, 37);
+    EXPECT_DOUBLE_EQ(s.rainbows[1].width, 5);
+    expect_vec(s.rainbows[1].up, {0, 0, 1});
+    EXPECT_TRUE(s.unsupported.empty());
+    EXPECT_EQ(error_of("rainbow { angle 20 fog_type 2 }").substr(0, 19), "t.pov:1:20: error: ");
+}
+
 TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
     scene::Scene s = run(
         "#declare P = pigment { facets }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
-        "rainbow { angle 42 }\n"
+        "rainbow { angle 42 arc_angle 120 }\n"
         "lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
     EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
-    EXPECT_EQ(s.unsupported[1].feature, "rainbow");
+    EXPECT_EQ(s.unsupported[1].feature, "rainbow arc_angle");
     EXPECT_EQ(s.unsupported[2].feature, "lemon");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "interp/dump_atmosphere.hpp"
 #include "interp/dump_pattern.hpp"
 #include "interp/dump_photons.hpp"
 
@@ -611,25 +612,6 @@ Json globals(const scene::GlobalSettings& g) {
     return o;
 }
 
-Json fog(const scene::Fog& f) {
-    const scene::Fog d;
-    Json o;
-    put_if(o, "fog_type", double(f.type), double(d.type));
-    put_if(o, "distance", f.distance, d.distance);
-    put_if(o, "colour", f.colour, d.colour);
-    put_if(o, "turbulence", f.turbulence.amount, d.turbulence.amount);
-    put_if(o, "octaves", double(f.turbulence.octaves), double(d.turbulence.octaves));
-    put_if(o, "omega", f.turbulence.omega, d.turbulence.omega);
-    put_if(o, "lambda", f.turbulence.lambda, d.turbulence.lambda);
-    put_if(o, "turb_depth", f.turb_depth, d.turb_depth);
-    put_if(o, "offset", f.offset, d.offset);
-    put_if(o, "alt", f.alt, d.alt);
-    put_if(o, "up", f.up, d.up);
-    put_transform(o, f.transform);
-    if (f.unsupported) o.put("unsupported", unsupported_text(*f.unsupported));
-    return o;
-}
-
 Json sky_sphere(const scene::SkySphere& s) {
     Json o;
     Json ps = Json::array();
@@ -658,6 +640,9 @@ std::string dump_scene_json(const scene::Scene& s) {
     Json fogs = Json::array();
     for (const auto& f : s.fogs) fogs.push(fog(f));
     put_nonempty(root, "fogs", fogs);
+    Json rainbows = Json::array();
+    for (const auto& r : s.rainbows) rainbows.push(rainbow(r));
+    put_nonempty(root, "rainbows", rainbows);
     Json u = Json::array();
     for (const auto& x : s.unsupported) u.push(unsupported_text(x));
     put_nonempty(root, "unsupported", u);

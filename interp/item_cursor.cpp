@@ -49,6 +49,7 @@ struct TypeNamer {
         return "a normal_map";
     }
     std::string operator()(const std::shared_ptr<const scene::Fog>&) const { return "a fog"; }
+    std::string operator()(const std::shared_ptr<const scene::Rainbow>&) const { return "a rainbow"; }
     std::string operator()(const std::shared_ptr<const scene::Media>&) const { return "a media"; }
     std::string operator()(const std::shared_ptr<const scene::SkySphere>&) const {
         return "a sky_sphere";

@@ -9,7 +9,7 @@ constexpr const char* kTypeNames[] = {
     "empty value", "float",       "vector",      "colour",       "string",     "array",
     "block",       "object",      "texture",     "pigment",      "finish",     "normal",
     "interior",    "material",    "camera",      "light_source", "transform",  "color_map",
-    "pigment_map", "texture_map", "normal_map",  "fog",          "media",      "sky_sphere",
+    "pigment_map", "texture_map", "normal_map",  "fog",          "rainbow",    "media",      "sky_sphere",
     "macro",
     "function",    "file",        "unsupported feature",
 };

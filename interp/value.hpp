@@ -68,6 +68,7 @@ struct Value {
         std::shared_ptr<const TextureMapValue>,           // texture_map
         std::shared_ptr<const NormalMapValue>,            // normal_map
         std::shared_ptr<const scene::Fog>,                // fog
+        std::shared_ptr<const scene::Rainbow>,            // rainbow
         std::shared_ptr<const scene::Media>,              // media
         std::shared_ptr<const scene::SkySphere>,          // sky_sphere
         std::shared_ptr<const MacroValue>,                // macro

@@ -8,6 +8,7 @@
 
 #include "base/diagnostics.hpp"
 #include "render/fog.hpp"
+#include "render/rainbow.hpp"
 #include "render/frame.hpp"
 #include "render/media.hpp"
 #include "render/normal.hpp"
@@ -152,6 +153,9 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
+    if (!scene_.rainbows.empty())
+        apply_rainbows(c, ray, *depth == kMaxDistance ? kMediaEscapeDepth : *depth, *ctx.interiors,
+                       state);
     if (media_) apply_media(c, ray, *depth == kMaxDistance ? kMediaEscapeDepth : *depth,
                             *depth != kMaxDistance, *ctx.interiors, state);
     if (!scene_.fogs.empty()) apply_fog(c, ray, *depth, *ctx.interiors);  // no call per ray without fog
@@ -440,6 +444,14 @@ void Tracer::apply_media(RayColour& c, const Ray& ray, double depth, bool hit,
         if (!inside.empty()) apply(inside);
     }
     if (!atmosphere_.empty()) apply(atmosphere_);
+}
+
+void Tracer::apply_rainbows(RayColour& c, const Ray& ray, double depth,
+                            const InteriorList& interiors, ThreadState& state) const {
+    if (interiors.in_solid()) return;  // as fog: only through hollow space
+    const glm::dvec3 dir = glm::normalize(ray.dir);
+    c.rgb = through_rainbows(scene_.rainbows, dir, depth, c.rgb, [&] { return state.uniform(); },
+                             c.transmit);
 }
 
 void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,

@@ -61,6 +61,8 @@ private:
                            const TexturePoint& at, const Context& ctx, ThreadState& state) const;
     RayColour sky(const glm::dvec3& dir) const;
     void apply_fog(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors) const;
+    void apply_rainbows(RayColour& c, const Ray& ray, double depth, const InteriorList& interiors,
+                        ThreadState& state) const;
     // The media of the interiors the ray is in (up to a hit) and the atmosphere, POV-Ray's
     // order: object media first, each pass over the whole segment.
     void apply_media(RayColour& c, const Ray& ray, double depth, bool hit,

@@ -59,6 +59,22 @@ struct Fog {
     SourceLoc loc;
 };
 
+// rainbow { }: a fog-like ring of colour around `direction` (the way the light travels).
+// Between rainbow angles angle ± width/2 the colour map is looked up at the position across the
+// band, and the colour is laid over the ray's like a fog of this distance (POV-Ray 3.7, probed).
+struct Rainbow {
+    glm::dvec3 direction{0, 0, 1};
+    double angle = 0, width = 0;  // degrees
+    // POV-Ray's default leaves objects within millions of units untouched and the sky covered
+    // (probed: between 5e6 and 1e9).
+    double distance = 1e8;
+    double jitter = 0;  // the band position moves by up to ± jitter
+    glm::dvec3 up{0, 1, 0};
+    ColourMap colour_map;
+    std::optional<Unsupported> unsupported;  // arc_angle, falloff_angle
+    SourceLoc loc;
+};
+
 struct Scene {
     double language_version = 3.62;    // #version in effect at the end of parsing
     bool version_given = false;        // a #version directive (or Version=) was seen
@@ -69,6 +85,7 @@ struct Scene {
     Colour background{0, 0, 0, 0, 0};
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;
     std::vector<std::shared_ptr<const Media>> atmosphere;  // scene-level media, in order
     // Every unsupported feature that reached the scene, in source order (lumen --check).
     std::vector<Unsupported> unsupported;
