@@ -27,7 +27,8 @@ bool through_rainbow(const scene::Rainbow& r, const glm::dvec3& dir, double dept
     // What shows through: the fog term, at least the colour's transmit. The filter tints it
     // by the part the fog term leaves (filter 0.5, transmit 0.2 over rgb 0.5, 0.6, 0.7 gave
     // 0.73201, 0.4112, 0.25521).
-    const double k = std::max(std::exp(-depth / r.distance), c.t);
+    // (At most 1: a negative distance would otherwise amplify what lies behind.)
+    const double k = std::clamp(std::max(std::exp(-depth / r.distance), c.t), 0.0, 1.0);
     const double f = c.f * (1 - k);
     transmit = k;
     seen = behind * (k * ((1 - f) + f * rgb)) + (1 - k) * rgb;

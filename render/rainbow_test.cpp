@@ -81,6 +81,20 @@ TEST(Rainbow, JitterMovesThePositionBeforeTheBandsEndsAreTested) {
     expect_rgb(through_rainbow(r, ray_of(62), kSky, kBackground, 0.5, t), kBackground);
 }
 
+TEST(Rainbow, OddSettingsGiveNoNaN) {
+    for (double distance : {0.0, -5.0, 1e-300}) {
+        double t = 1;
+        const glm::dvec3 c = through_rainbow(ring({0.8, 0.4, 0.2, 0.5, 0.2}, distance), ray_of(68), 10,
+                                             kBackground, 0, t);
+        EXPECT_TRUE(std::isfinite(c.x + c.y + c.z + t)) << distance;
+        EXPECT_LE(c.x, 1.0);
+    }
+    scene::Rainbow r = ring({1, 1, 1});
+    r.direction = glm::dvec3(0);
+    double t = 1;
+    expect_rgb(through_rainbow(r, ray_of(68), kSky, kBackground, 0, t), kBackground);
+}
+
 // tests/atmosphere/rainbow.pov's two bands, pixel (90, 108) over the sky: 0.783 across the
 // first band and just inside the second's clear edge. POV-Ray averages the two results.
 TEST(Rainbow, OverlappingBandsAverage) {
