@@ -4,8 +4,9 @@
 # median of REPEATS (default 3) kept:
 # 1. evaluations per second: a height_field { function 2000, 2000 { F } } evaluates F four
 #    million times while the scene is parsed; each renderer's reported parse time (POV-Ray's
-#    "Parse Time", lumen's "parsed in") less that of the same scene at 2 x 2 gives the rate,
-#    for an arithmetic body, f_noise3d, and a user function calling internal ones;
+#    "Parse Time", lumen's "parsed in") less that of the same field of the trivial function
+#    `x` (which costs the field's building and one call a sample) gives the rate of F's own
+#    work, for an arithmetic body, f_noise3d, and a user function calling internal ones;
 # 2. examples/isosurface.pov at 640x480 +A0.3 +WT2: wall seconds and the ratio lumen/POV-Ray.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -34,7 +35,7 @@ lumen_parse() { "$lumen" "+I$1" +W8 +H8 "+O$work/l.png" 2>&1 | sed -n 's/.*parse
 printf '%-14s %14s %14s %7s\n' function "lumen evals/s" "povray evals/s" ratio
 for i in "${!bodies[@]}"; do
     scene "${bodies[$i]}" 2000 >"$work/big.pov"
-    scene "${bodies[$i]}" 2 >"$work/small.pov"
+    scene "x" 2000 >"$work/small.pov"
     lb=() ls=() pb=() ps=()
     for ((r = 0; r < repeats; ++r)); do
         lb+=("$(lumen_parse "$work/big.pov")") ls+=("$(lumen_parse "$work/small.pov")")
