@@ -1,7 +1,8 @@
 // The radiosity mesh's stability reports on scenes read from SDL: coincident surfaces facing
 // the same way and sliver elements are reported with their source locations; a box resting
 // on a floor (surfaces in contact, facing each other), surfaces sharing an edge and overlaps of
-// one material are not.
+// one material are not. The mesh's materials: each patch reflects with the texture the renderer
+// shows there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +15,7 @@
 namespace lumen::cli {
 namespace {
 
-std::vector<std::string> mesh_warnings(const std::string& objects) {
+render::radiosity::SceneMesh scene_mesh(const std::string& objects) {
     SourceManager sources;
     const scene::Scene scene = interp::interpret_text(
         sources, "mesh.pov",
@@ -22,8 +23,11 @@ std::vector<std::string> mesh_warnings(const std::string& objects) {
         "camera { location <0, 3, -6> look_at 0 }\nlight_source { <2, 5, -3> rgb 1 }\n" +
             objects,
         {});
-    return render::radiosity::build_scene_mesh(render::RenderFrame(scene).geometry(), 0.5)
-        .warnings;
+    return render::radiosity::build_scene_mesh(render::RenderFrame(scene).geometry(), 0.5);
+}
+
+std::vector<std::string> mesh_warnings(const std::string& objects) {
+    return scene_mesh(objects).warnings;
 }
 
 int count_containing(const std::vector<std::string>& w, const std::string& text) {
@@ -100,6 +104,25 @@ TEST(RadiosityMeshChecks, SliverTrianglesAreReported) {
         "triangle { <-1, 1, 0>, <1, 1, 0>, <0, 2, 0> pigment { rgb 0.5 } }\n");
     ASSERT_EQ(count_containing(w, "sliver"), 1);
     EXPECT_EQ(count_containing(w, "mesh.pov:4:1: warning: radiosity: "), 1);
+}
+
+// A mesh2 with a texture_list and no texture of its own (camera/mesh_camera's room and vases):
+// its faces reflect with their own entries, not with the black default texture.
+TEST(RadiositySceneMesh, MeshFacesReflectWithTheirTextureListEntries) {
+    const auto mesh = scene_mesh(
+        "mesh2 { vertex_vectors { 4, <-1, 0, -1>, <1, 0, -1>, <1, 0, 1>, <-1, 0, 1> }\n"
+        "  texture_list { 2, texture { pigment { rgb <1, 0, 0> } }\n"
+        "                    texture { pigment { rgb <0, 1, 0> } } }\n"
+        "  face_indices { 2, <0, 1, 2>, 0, <0, 2, 3>, 1 } }\n");
+    int red = 0, green = 0, other = 0;
+    for (const auto& v : mesh.vertices) {
+        if (v.rho.x > 0 && v.rho.y == 0 && v.rho.z == 0) ++red;
+        else if (v.rho.y > 0 && v.rho.x == 0 && v.rho.z == 0) ++green;
+        else ++other;
+    }
+    EXPECT_GT(red, 0);
+    EXPECT_GT(green, 0);
+    EXPECT_EQ(other, 0);
 }
 
 }  // namespace

@@ -22,26 +22,32 @@ inline constexpr int kFrameConsts = 128;
 // kMaxStack slots fit.
 inline constexpr int kMaxFrame = 512;
 
+// The operations, in one list that makes both the enum and the VM's dispatch table (vm.cpp).
+#define LUMEN_REGISTER_OPS(X)                                                              \
+    X(Move)           /* r[d] = r[s] */                                                    \
+    X(LoadConst)      /* r[d] = consts[a] */                                               \
+    X(Add) X(Sub) X(Mul) X(Div) /* r[d] = r[s] op r[t] */                                   \
+    X(Neg)            /* r[d] = -r[s] */                                                   \
+    X(Lt) X(Le) X(Eq) X(Ne) X(Ge) X(Gt) /* as Op's */                                       \
+    X(And) X(Or)                                                                           \
+    X(Math1)          /* r[d] = math1(a, r[s]) */                                          \
+    X(Math2)          /* r[d] = math2(a, r[s], r[t]) */                                    \
+    X(Min) X(Max)     /* r[d] = POV's min/max(r[s], r[t]) */                               \
+    X(Jump)           /* pc = a */                                                         \
+    X(JumpIfNotNeg)   /* unless r[s] < 0, pc = a */                                        \
+    X(JumpIfNotZero)  /* unless r[s] == 0, pc = a */                                       \
+    X(JumpIfGreater)  /* unless r[s] <= r[t], pc = a */                                    \
+    X(Internal)       /* r[d] = internal a at r[s ...] */                                  \
+    X(Call)           /* r[d] = callees[a] at r[s ...], component c */                     \
+    X(External)       /* r[d] = member c of externals[a] at r[s], r[s + 1], r[s + 2] */    \
+    X(Transform)      /* r[d] = member c of the matrix at consts[a] times r[s ...] */      \
+    X(Spline)         /* r[d] = member c of splines[a] at r[s] */                          \
+    X(Return)         /* the result is r[s] (0 when a is 1: the stack was empty) */
+
 enum class ROp : uint8_t {
-    Move,        // r[d] = r[s]
-    LoadConst,   // r[d] = consts[a]
-    Add, Sub, Mul, Div,           // r[d] = r[s] op r[t]
-    Neg,                          // r[d] = -r[s]
-    Lt, Le, Eq, Ne, Ge, Gt,       // as Op's
-    And, Or,
-    Math1,       // r[d] = math1(a, r[s])
-    Math2,       // r[d] = math2(a, r[s], r[t])
-    Min, Max,    // r[d] = POV's min/max(r[s], r[t])
-    Jump,        // pc = a
-    JumpIfNotNeg,   // unless r[s] < 0, pc = a
-    JumpIfNotZero,  // unless r[s] == 0, pc = a
-    JumpIfGreater,  // unless r[s] <= r[t], pc = a
-    Internal,    // r[d] = internal a at r[s ...]
-    Call,        // r[d] = callees[a] at r[s ...], component c
-    External,    // r[d] = member c of externals[a] at r[s], r[s + 1], r[s + 2]
-    Transform,   // r[d] = member c of the matrix at consts[a] times r[s ...]
-    Spline,      // r[d] = member c of splines[a] at r[s]
-    Return,      // the result is r[s] (0 when a is 1: the stack was empty)
+#define LUMEN_ROP_ENUM(name) name,
+    LUMEN_REGISTER_OPS(LUMEN_ROP_ENUM)
+#undef LUMEN_ROP_ENUM
 };
 
 struct RInstr {

@@ -75,12 +75,10 @@ double run_in(const RegisterCode& rc, const Program& p, const double* args,
     for (int i = 0; i < rc.args; ++i) a[i] = i < p.params ? args[i] : 0.0;
     // Threaded dispatch (GCC's labels as values): each operation ends in its own jump to the
     // next, which the branch predictor learns per operation, not once for the whole loop.
-    static constexpr void* kLabels[] = {
-        &&Move, &&LoadConst, &&Add, &&Sub, &&Mul, &&Div, &&Neg, &&Lt, &&Le, &&Eq, &&Ne, &&Ge,
-        &&Gt, &&And, &&Or, &&Math1, &&Math2, &&Min, &&Max, &&Jump, &&JumpIfNotNeg,
-        &&JumpIfNotZero, &&JumpIfGreater, &&Internal, &&Call, &&External, &&Transform, &&Spline,
-        &&Return};
-    static_assert(std::size(kLabels) == size_t(ROp::Return) + 1);
+    // The labels below carry the operations' names, in the enum's order.
+#define LUMEN_ROP_LABEL(name) &&name,
+    static constexpr void* kLabels[] = {LUMEN_REGISTER_OPS(LUMEN_ROP_LABEL)};
+#undef LUMEN_ROP_LABEL
     const RInstr* const code = rc.code.data();
     const RInstr* in = code;
 #define LUMEN_NEXT goto* kLabels[size_t((++in)->op)]
