@@ -77,7 +77,7 @@ double run_in(const RegisterCode& rc, const Program& p, const double* args,
     // next, which the branch predictor learns per operation, not once for the whole loop.
     // The labels below carry the operations' names, in the enum's order.
 #define LUMEN_ROP_LABEL(name) &&name,
-    static constexpr void* kLabels[] = {LUMEN_REGISTER_OPS(LUMEN_ROP_LABEL)};
+    static void* const kLabels[] = {LUMEN_REGISTER_OPS(LUMEN_ROP_LABEL)};
 #undef LUMEN_ROP_LABEL
     const RInstr* const code = rc.code.data();
     const RInstr* in = code;
