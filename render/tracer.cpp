@@ -153,11 +153,10 @@ RayColour Tracer::trace(const Ray& ray, const Context& ctx, ThreadState& state,
     } else {
         c = sky(ray.dir);
     }
-    if (!scene_.rainbows.empty())
-        apply_rainbows(c, ray, *depth == kMaxDistance ? kMediaEscapeDepth : *depth, *ctx.interiors,
-                       state);
-    if (media_) apply_media(c, ray, *depth == kMaxDistance ? kMediaEscapeDepth : *depth,
-                            *depth != kMaxDistance, *ctx.interiors, state);
+    // Rainbows and media see a ray that hits nothing as POV-Ray's 2e10 long.
+    const double atmosphere_depth = *depth == kMaxDistance ? kMediaEscapeDepth : *depth;
+    if (!scene_.rainbows.empty()) apply_rainbows(c, ray, atmosphere_depth, *ctx.interiors, state);
+    if (media_) apply_media(c, ray, atmosphere_depth, *depth != kMaxDistance, *ctx.interiors, state);
     if (!scene_.fogs.empty()) apply_fog(c, ray, *depth, *ctx.interiors);  // no call per ray without fog
     return c;
 }
@@ -449,9 +448,8 @@ void Tracer::apply_media(RayColour& c, const Ray& ray, double depth, bool hit,
 void Tracer::apply_rainbows(RayColour& c, const Ray& ray, double depth,
                             const InteriorList& interiors, ThreadState& state) const {
     if (interiors.in_solid()) return;  // as fog: only through hollow space
-    const glm::dvec3 dir = glm::normalize(ray.dir);
-    c.rgb = through_rainbows(scene_.rainbows, dir, depth, c.rgb, [&] { return state.uniform(); },
-                             c.transmit);
+    c.rgb = through_rainbows(scene_.rainbows, ray.dir, depth, c.rgb,  // ray.dir is unit
+                             [&] { return state.uniform(); }, c.transmit);
 }
 
 void Tracer::apply_fog(RayColour& c, const Ray& ray, double depth,
