@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
     tao-pegtl-dev libglm-dev libpng-dev libopenimageio-dev openimageio-tools libgtest-dev
     libfreetype-dev  # text: TrueType fonts
+    libembree-dev  # big meshes trace through Embree's BVH (render/shapes/mesh_embree.hpp)
     cmake g++ make pkg-config
     povray povray-includes povray-examples
     clang libclang-rt-14-dev
@@ -14,8 +15,8 @@ packages=(
     slurm-wlm munge  # lumen farm --slurm and its test cluster (tools/slurm-local-cluster)
 )
 # Optional: `--bench` adds what the benchmarks need: gnuplot for the charts (make
-# bench-radiosity, bench/parse_scale.sh), Embree for bench/mesh_rays.cpp's comparison.
-if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox libembree-dev); fi
+# bench-radiosity, bench/parse_scale.sh).
+if [ "${1:-}" = "--bench" ]; then packages+=(gnuplot-nox); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -41,12 +41,13 @@ glm::dvec2 face_uv(const scene::Mesh& m, const scene::Mesh::Face& face, double b
 
 }  // namespace
 
-std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
+std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal traversal) {
     auto out = std::make_unique<MeshShape>();
     out->mesh = &m;
     std::vector<TriangleCore> tris;
     std::vector<uint32_t> faces;
     std::vector<Aabb> boxes;
+    std::vector<uint32_t> corners;  // each triangle's vertex indices, for Embree
     tris.reserve(m.faces.size());
     faces.reserve(m.faces.size());
     boxes.reserve(m.faces.size());
@@ -62,11 +63,20 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate) {
         for (int i = 0; i < 3; ++i) box.expand(m.vertices[v[i]]);
         tris.push_back(tri);
         faces.push_back(uint32_t(f));
+        for (int i = 0; i < 3; ++i) corners.push_back(uint32_t(v[i]));
         boxes.push_back(box);
         out->box.expand(box);
     }
     out->valid = !tris.empty();
-    if (accelerate && !tris.empty()) {
+    if (traversal == MeshTraversal::Best && tris.size() >= kEmbreeMinTriangles) {
+        out->tris = std::move(tris);
+        out->face = std::move(faces);
+        out->embree = EmbreeMesh::build(m.vertices, corners, out->tris);
+        if (out->embree) return out;
+        tris = std::move(out->tris);
+        faces = std::move(out->face);
+    }
+    if (traversal != MeshTraversal::Scan && !tris.empty()) {
         Bvh binary;
         binary.build(boxes, 4);
         out->bvh = WideBvh(binary);
@@ -87,24 +97,35 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
     if (!s.valid) return false;
     int best = -1;
     double best_u = 0, best_v = 0;
-    for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
-        double t, u, v;
-        if (hit_triangle(s.tris[i], r, tmin, tmax, t, u, v)) {
-            tmax = t;  // prunes the rest of the traversal
-            best = int(i);
-            best_u = u;
-            best_v = v;
-        }
-    });
+    if (s.embree) {
+        EmbreeMesh::Found f;
+        if (!s.embree->nearest(r, tmin, tmax, f)) return false;
+        best = int(f.tri), best_u = f.u, best_v = f.v, tmax = f.t;
+    } else {
+        for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
+            double t, u, v;
+            if (hit_triangle(s.tris[i], r, tmin, tmax, t, u, v)) {
+                tmax = t;  // prunes the rest of the traversal
+                best = int(i);
+                best_u = u;
+                best_v = v;
+            }
+        });
+    }
     if (best < 0) return false;
     const scene::Mesh& m = *s.mesh;
-    const scene::Mesh::Face& face = m.faces[s.face[best]];
     const TriangleCore& tri = s.tris[best];
-    glm::dvec3 flat = glm::normalize(glm::cross(tri.e1, tri.e2));
     h.t = tmax;
-    h.normal = flat;
+    h.normal = glm::cross(tri.e1, tri.e2);  // need not be unit (ShapeHit)
+    h.uv = glm::dvec2(0);
+    h.texture = nullptr;
+    // A bare mesh's faces hold nothing more: skip loading its face (a cache miss per
+    // incoherent ray in a big mesh).
+    if (m.normals.empty() && m.uvs.empty() && m.textures.empty()) return true;
+    const scene::Mesh::Face& face = m.faces[s.face[best]];
     if (valid_index(face.n[0], m.normals.size()) && valid_index(face.n[1], m.normals.size()) &&
         valid_index(face.n[2], m.normals.size())) {
+        const glm::dvec3 flat = glm::normalize(h.normal);
         std::array<glm::dvec3, 3> n;
         for (int i = 0; i < 3; ++i) {
             double len = glm::length(m.normals[face.n[i]]);
@@ -119,6 +140,12 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
 
 bool any_hit(const MeshShape& s, const LocalRay& r, double tmin, double tmax, double& t) {
     if (!s.valid) return false;
+    if (s.embree) {
+        EmbreeMesh::Found f;
+        if (!s.embree->any(r, tmin, tmax, f)) return false;
+        t = f.t;
+        return true;
+    }
     bool found = false;
     for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
         double u, v;
@@ -134,6 +161,7 @@ bool inside(const MeshShape& s, const glm::dvec3& p) {
     if (!s.valid || !s.mesh->inside_vector || !s.box.contains(p)) return false;
     LocalRay r{p, *s.mesh->inside_vector};
     if (r.d == glm::dvec3(0)) return false;
+    if (s.embree) return s.embree->crossings(r) % 2 == 1;
     double tmax = Aabb::inf;
     int crossings = 0;
     for_candidates(s, r, 0.0, tmax, [&](uint32_t i) {

@@ -1,4 +1,5 @@
-// mesh / mesh2: triangles in a per-mesh BVH, held by pointer (the BVH is large).
+// mesh / mesh2: triangles in a per-mesh BVH (Embree's where lumen is built with it and the
+// mesh is big enough to gain from it, else lumen's own), held by pointer (the BVH is large).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -6,6 +7,7 @@
 
 #include "render/bvh.hpp"
 #include "render/wide_bvh.hpp"
+#include "render/shapes/mesh_embree.hpp"
 #include "render/shapes/triangle.hpp"
 
 namespace lumen::render {
@@ -14,12 +16,18 @@ struct MeshShape {
     const scene::Mesh* mesh = nullptr;
     std::vector<TriangleCore> tris;    // in BVH order
     std::vector<uint32_t> face;        // source face of each entry of tris
-    WideBvh bvh;                       // empty when built without acceleration
+    WideBvh bvh;                       // empty when built without acceleration or with Embree
+    std::unique_ptr<EmbreeMesh> embree;  // over tris, in their source order
     Aabb box;
     bool valid = true;
 };
-// `accelerate` = false skips the BVH (a one-off inside test); queries then scan every face.
-std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, bool accelerate = true);
+// How a mesh's queries find their triangles: every face in turn (a one-off inside test),
+// lumen's BVH, or Embree's where it is built in (else lumen's).
+enum class MeshTraversal { Scan, Bvh, Best };
+// Below this many triangles lumen's own BVH serves as well as Embree's.
+inline constexpr size_t kEmbreeMinTriangles = 256;
+std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m,
+                                     MeshTraversal traversal = MeshTraversal::Best);
 bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
 // Some triangle (not necessarily the nearest) at tmin < t < tmax, its t in `t`: a shadow
 // ray's test, which may stop at the first one.
@@ -37,7 +45,7 @@ template <> struct ShapeTraits<scene::Mesh> {
     using Prepared = MeshPtr;
     static constexpr double min_depth = kDepthDefault;
     static Prepared prepare(const scene::Mesh& m, bool accelerate) {
-        return make_mesh(m, accelerate);
+        return make_mesh(m, accelerate ? MeshTraversal::Best : MeshTraversal::Scan);
     }
     // Not baked: traced in object space under its transform.
     static bool bake(const scene::Mesh&, const scene::Transform&, Prepared&) { return false; }
