@@ -251,7 +251,7 @@ size_t count_primitives(const NodeStore& store, uint32_t index) {
         return total;
     }
     if (auto* mesh = std::get_if<std::unique_ptr<MeshShape>>(&store.shapes[n.shape]))
-        return (*mesh)->tris.size();
+        return (*mesh)->face.size();
     return 1;
 }
 

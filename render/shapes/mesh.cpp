@@ -69,12 +69,11 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal travers
     }
     out->valid = !tris.empty();
     if (traversal == MeshTraversal::Best && tris.size() >= kEmbreeMinTriangles) {
-        out->tris = std::move(tris);
-        out->face = std::move(faces);
-        out->embree = EmbreeMesh::build(m.vertices, corners, out->tris);
-        if (out->embree) return out;
-        tris = std::move(out->tris);
-        faces = std::move(out->face);
+        out->embree = EmbreeMesh::build(m.vertices, corners, tris);
+        if (out->embree) {  // its planes answer for the triangles
+            out->face = std::move(faces);
+            return out;
+        }
     }
     if (traversal != MeshTraversal::Scan && !tris.empty()) {
         Bvh binary;
@@ -97,10 +96,11 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
     if (!s.valid) return false;
     int best = -1;
     double best_u = 0, best_v = 0;
+    glm::dvec3 normal;  // e1 x e2: need not be unit (ShapeHit)
     if (s.embree) {
         EmbreeMesh::Found f;
         if (!s.embree->nearest(r, tmin, tmax, f)) return false;
-        best = int(f.tri), best_u = f.u, best_v = f.v, tmax = f.t;
+        best = int(f.tri), best_u = f.u, best_v = f.v, tmax = f.t, normal = f.normal;
     } else {
         for_candidates(s, r, tmin, tmax, [&](uint32_t i) {
             double t, u, v;
@@ -111,12 +111,12 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
                 best_v = v;
             }
         });
+        if (best < 0) return false;
+        normal = glm::cross(s.tris[best].e1, s.tris[best].e2);
     }
-    if (best < 0) return false;
     const scene::Mesh& m = *s.mesh;
-    const TriangleCore& tri = s.tris[best];
     h.t = tmax;
-    h.normal = glm::cross(tri.e1, tri.e2);  // need not be unit (ShapeHit)
+    h.normal = normal;
     h.uv = glm::dvec2(0);
     h.texture = nullptr;
     // A bare mesh's faces hold nothing more: skip loading its face (a cache miss per

@@ -14,8 +14,8 @@ namespace lumen::render {
 
 struct MeshShape {
     const scene::Mesh* mesh = nullptr;
-    std::vector<TriangleCore> tris;    // in BVH order
-    std::vector<uint32_t> face;        // source face of each entry of tris
+    std::vector<TriangleCore> tris;    // in BVH order; none with Embree
+    std::vector<uint32_t> face;        // source face of each triangle
     WideBvh bvh;                       // empty when built without acceleration or with Embree
     std::unique_ptr<EmbreeMesh> embree;  // over tris, in their source order
     Aabb box;

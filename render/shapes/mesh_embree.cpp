@@ -4,11 +4,11 @@
 // precision follows the mesh's size, not its distance from the origin), and decides which
 // triangles a ray meets: in its robust mode its test is watertight along edges, so a ray
 // through a shared edge meets one of the two (without it, a sixth of the rays aimed at a
-// grid's edges slipped through). The double-precision plane of that triangle then gives the distance, the same one
-// lumen's own test gives (hit_triangle, its edge tests disabled: they would turn down
-// Embree's choice within rounding of an edge and open a crack there). A candidate outside
+// grid's edges slipped through). The triangle's plane in double precision then gives the
+// distance, as lumen's own test would to rounding (no edge test there: it would turn down
+// Embree's choice within rounding of an edge and open a crack). A candidate outside
 // (tmin, tmax) in double precision is passed over: Embree searches over an interval widened
-// by a float step on each side, and the ray leaving a surface may meet its own triangle.
+// by a float step on each side, and a ray leaving a surface may meet its own triangle.
 // - nearest: Embree's nearest candidate is confirmed; where it falls outside (tmin, tmax)
 //   the search runs again with a filter that confirms every candidate;
 // - any and crossings: the filter confirms every candidate; crossings rejects them all, so
@@ -52,7 +52,7 @@ float above(double x) {
 // The intersect context a filter reads its query from.
 struct Query {
     RTCIntersectContext base;  // first: Embree passes a pointer to it
-    const std::vector<TriangleCore>* tris;
+    const EmbreeMesh::Plane* planes;
     const LocalRay* ray;
     double tmin, tmax;
     EmbreeMesh::Found found;
@@ -62,22 +62,30 @@ struct Query {
     int seen_count = 0;
 };
 
-// The distance to triangle `tri`'s plane in double precision, if within (tmin, tmax); the
-// weights are brought back into the triangle for the normal and uv blends.
-bool confirm(const Query& q, uint32_t tri, EmbreeMesh::Found& f) {
+// The distance to triangle `tri`'s plane in double precision, if within (tmin, tmax); Embree's
+// weights, brought back into the triangle, for the normal and uv blends.
+bool confirm(const Query& q, uint32_t tri, float u, float v, EmbreeMesh::Found& f) {
+    const EmbreeMesh::Plane& p = q.planes[tri];
+    const double along = glm::dot(p.n, q.ray->d);
+    if (along == 0) return false;  // in the plane, in double precision
+    f.t = (p.d - glm::dot(p.n, q.ray->o)) / along;
+    if (!(f.t > q.tmin && f.t < q.tmax)) return false;
     f.tri = tri;
-    if (!hit_triangle((*q.tris)[tri], *q.ray, q.tmin, q.tmax, f.t, f.u, f.v, INFINITY))
-        return false;
-    f.u = std::clamp(f.u, 0.0, 1.0);
-    f.v = std::clamp(f.v, 0.0, 1.0 - f.u);
+    f.u = std::clamp(double(u), 0.0, 1.0);
+    f.v = std::clamp(double(v), 0.0, 1.0 - f.u);
+    f.normal = p.n;
     return true;
+}
+bool confirm(const Query& q, const RTCFilterFunctionNArguments* args, EmbreeMesh::Found& f) {
+    return confirm(q, RTCHitN_primID(args->hit, args->N, 0), RTCHitN_u(args->hit, args->N, 0),
+                   RTCHitN_v(args->hit, args->N, 0), f);
 }
 
 // Accepts a candidate only where confirm() does (nearest and any).
 void confirm_filter(const RTCFilterFunctionNArguments* args) {
     Query& q = *reinterpret_cast<Query*>(args->context);
     EmbreeMesh::Found f;
-    if (!confirm(q, RTCHitN_primID(args->hit, args->N, 0), f)) {
+    if (!confirm(q, args, f)) {
         args->valid[0] = 0;
         return;
     }
@@ -89,9 +97,9 @@ void confirm_filter(const RTCFilterFunctionNArguments* args) {
 void crossing_filter(const RTCFilterFunctionNArguments* args) {
     Query& q = *reinterpret_cast<Query*>(args->context);
     args->valid[0] = 0;
-    const uint32_t tri = RTCHitN_primID(args->hit, args->N, 0);
     EmbreeMesh::Found f;
-    if (!confirm(q, tri, f)) return;
+    if (!confirm(q, args, f)) return;
+    const uint32_t tri = f.tri;
     // A triangle may be met in more than one leaf: count it once.
     if (std::find(q.seen, q.seen + q.seen_count, tri) != q.seen + q.seen_count) return;
     if (q.seen_count < 16) q.seen[q.seen_count++] = tri;
@@ -116,8 +124,13 @@ std::unique_ptr<EmbreeMesh> EmbreeMesh::build(const std::vector<glm::dvec3>& ver
         if (i >= vertices.size() || !fits_float(vertices[i])) return nullptr;
         lo = glm::min(lo, vertices[i]), hi = glm::max(hi, vertices[i]);
     }
-    std::unique_ptr<EmbreeMesh> out(new EmbreeMesh(tris));
+    std::unique_ptr<EmbreeMesh> out(new EmbreeMesh);
     out->centre_ = 0.5 * (lo + hi);
+    out->planes_.reserve(tris.size());
+    for (const TriangleCore& t : tris) {
+        const glm::dvec3 n = glm::cross(t.e1, t.e2);
+        out->planes_.push_back({n, glm::dot(n, t.p0)});
+    }
     RTCScene scene = rtcNewScene(dev);
     if (!scene) return nullptr;
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
@@ -177,26 +190,27 @@ bool embree_ray(const LocalRay& r, const glm::dvec3& centre, double tmin, double
 bool EmbreeMesh::nearest(const LocalRay& r, double tmin, double tmax, Found& out) const {
     Query q{};
     rtcInitIntersectContext(&q.base);
-    q.tris = &tris_, q.ray = &r, q.tmin = tmin, q.tmax = tmax;
+    q.planes = planes_.data(), q.ray = &r, q.tmin = tmin, q.tmax = tmax;
     RTCRayHit rh;
     if (!embree_ray(r, centre_, tmin, tmax, rh.ray)) return false;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    if (confirm(q, rh.hit.primID, out)) return true;
+    if (confirm(q, rh.hit.primID, rh.hit.u, rh.hit.v, out)) return true;
     // Outside (tmin, tmax) in double precision: confirm every candidate.
     q.base.filter = confirm_filter;
     embree_ray(r, centre_, tmin, tmax, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
-    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID && confirm(q, rh.hit.primID, out);
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
+           confirm(q, rh.hit.primID, rh.hit.u, rh.hit.v, out);
 }
 
 bool EmbreeMesh::any(const LocalRay& r, double tmin, double tmax, Found& out) const {
     Query q{};
     rtcInitIntersectContext(&q.base);
     q.base.filter = confirm_filter;
-    q.tris = &tris_, q.ray = &r, q.tmin = tmin, q.tmax = tmax;
+    q.planes = planes_.data(), q.ray = &r, q.tmin = tmin, q.tmax = tmax;
     RTCRay ray;
     if (!embree_ray(r, centre_, tmin, tmax, ray)) return false;
     rtcOccluded1(static_cast<RTCScene>(scene_), &q.base, &ray);
@@ -209,7 +223,7 @@ int EmbreeMesh::crossings(const LocalRay& r) const {
     Query q{};
     rtcInitIntersectContext(&q.base);
     q.base.filter = crossing_filter;
-    q.tris = &tris_, q.ray = &r, q.tmin = 0, q.tmax = INFINITY;
+    q.planes = planes_.data(), q.ray = &r, q.tmin = 0, q.tmax = INFINITY;
     RTCRayHit rh;
     if (!embree_ray(r, centre_, 0, INFINITY, rh.ray)) return 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
