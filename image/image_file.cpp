@@ -68,14 +68,14 @@ ImageFile read_image(const std::string& path, Format format) {
         case Format::Ppm:
         case Format::Pgm: return read_pnm(path);
         case Format::Tga: return read_tga(path);
-        case Format::Gif:
+        case Format::Gif: return read_gif(path);
+        case Format::Pot: return read_pot(path);
         case Format::Jpeg:
         case Format::Tiff:
         case Format::Bmp:
         case Format::Exr:
         case Format::Hdr: return read_with_oiio(path);
         case Format::Iff: throw ImageError("IFF images are not supported");
-        case Format::Pot: throw ImageError("POT images are not supported");
         case Format::Sys: break;
     }
     throw ImageError("'sys' images cannot be read on this system");

@@ -57,14 +57,16 @@ struct ImageError : std::runtime_error {
 inline constexpr size_t kMaxImagePixels = size_t(1) << 24;  // 4096 x 4096
 inline constexpr int kMaxImageSide = 1 << 16;
 
-// Reads `path` as `format` or throws ImageError. Iff, Sys and Pot are refused.
+// Reads `path` as `format` or throws ImageError. Iff and Sys are refused.
 ImageFile read_image(const std::string& path, Format format);
 
 // One reader per file family (each throws ImageError).
 ImageFile read_png(const std::string& path);
 ImageFile read_pnm(const std::string& path);  // P2, P3, P5, P6
 ImageFile read_tga(const std::string& path);
-ImageFile read_with_oiio(const std::string& path);  // JPEG, GIF, TIFF, BMP, EXR, HDR
+ImageFile read_gif(const std::string& path);  // palette entries and indices
+ImageFile read_pot(const std::string& path);  // 16-bit grey heights
+ImageFile read_with_oiio(const std::string& path);  // JPEG, TIFF, BMP, EXR, HDR
 
 // Throws ImageError unless width x height is a size lumen reads.
 void check_image_size(long long width, long long height);

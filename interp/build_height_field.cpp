@@ -139,9 +139,6 @@ scene::ObjectPtr build_height_field(ItemCursor& cur) {
     }
     const ImageName name = read_image_name(cur, "height_field");
     if (name.format == image::Format::Iff) cur.fail(name.loc, "iff images cannot make a height_field");
-    // Their heights are palette indices, which the OpenImageIO reader does not give.
-    if (name.format == image::Format::Gif || name.format == image::Format::Pot)
-        return unsupported_object({std::string("height_field ") + image::format_keyword(name.format), name.loc});
     // Height fields use the raw values unless a gamma is given.
     const image::Decode decode = read_image_gamma(cur).value_or(image::Decode{});
     const image::ImageFile file = load_image(cur, name).file;

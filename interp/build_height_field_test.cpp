@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "image/image_file.hpp"
 #include "interp/build_test_support.hpp"
 
 namespace lumen::interp::testing {
@@ -105,10 +106,28 @@ TEST_F(BuildHeightField, ErrorsAreLocated) {
     const std::string one = temp_image("one.pgm", "P2\n1 1\n255\n7\n");
     EXPECT_EQ(error_of("height_field { pgm \"" + one + "\" }"),
               "t.pov:1:20: error: a height_field image needs at least 2 x 2 pixels");
-    // GIF and POT heights are palette indices, which lumen's GIF reading does not give.
-    auto gif = first_object("height_field { gif \"x.gif\" }");
-    ASSERT_TRUE(std::holds_alternative<scene::UnsupportedShape>(gif->shape));
-    EXPECT_EQ(std::get<scene::UnsupportedShape>(gif->shape).what.feature, "height_field gif");
+}
+
+// GIF heights are palette indices times 256; POT (Fractint's mtmand.pot, a GIF twice as wide)
+// joins each row's left-half index (high byte) and right-half index (low byte). The heights
+// agree with POV-Ray's: trace() down onto the POT field at six points gave its heights to 8
+// digits.
+TEST_F(BuildHeightField, GifIndicesAndPotHeights) {
+    const std::string pot = "/usr/share/povray-3.7/include/mtmand.pot";
+    if (!fs::exists(pot)) GTEST_SKIP() << "povray-includes is not installed";
+    const lumen::image::ImageFile file = lumen::image::read_gif(pot);
+    auto index = [&](int x, int z) { return unsigned(file.indices[size_t((119 - z) * 320 + x)]); };
+    auto gif = shape_of<scene::HeightField>("height_field { gif \"" + pot + "\" }");
+    ASSERT_EQ(gif.columns, 320);
+    ASSERT_EQ(gif.rows, 120);
+    auto field = shape_of<scene::HeightField>("height_field { pot \"" + pot + "\" }");
+    ASSERT_EQ(field.columns, 160);
+    ASSERT_EQ(field.rows, 120);
+    for (int z = 0; z < 120; z += 7)
+        for (int x = 0; x < 160; x += 3) {
+            EXPECT_EQ(gif.at(x, z), index(x, z) * 256);
+            ASSERT_EQ(field.at(x, z), index(x, z) * 256 + index(x + 160, z)) << x << ", " << z;
+        }
 }
 
 }  // namespace

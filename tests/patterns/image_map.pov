@@ -8,6 +8,7 @@
 // 15 material_map, palette                        16 material_map, true colour
 // 17 image_pattern with a colour_map              18 image_pattern use_alpha
 // 19 uv_mapping on a sphere                       20 `transmit all` and `filter all`
+// 21 GIF, interlaced, a transparent entry, `filter 2,`
 // Legacy=1: no #version 3.7 (the 3.6 gamma rule and the legacy opacity).
 #ifndef (Kind) #declare Kind = 0; #end
 #ifndef (Legacy) #declare Legacy = 0; #end
@@ -88,4 +89,5 @@ light_source { <-3, 5, -6> rgb 1 }
     color_map { [0 rgb <0, 0.5, 0.2>] [1 rgb <1, 0.9, 0.8>] } }) #break
 #case (19) Seen(sphere { 0, 1.2 pigment { uv_mapping image_map { png concat(Dir, "map_rgb.png") interpolate 2 } } finish { Lit } rotate 60 * y }) #break
 #case (20) Once(pigment { image_map { png concat(Dir, "map_rgb.png") filter all 0.5 transmit all 0.25 } }) #break
+#case (21) Once(pigment { image_map { gif concat(Dir, "map_palette.gif") filter 2, 0.6 interpolate 2 } }) #break
 #end

@@ -26,6 +26,29 @@ png("map_rgba.png", 6, 8, rgba)
 plte = bytes([250, 40, 30, 40, 200, 60, 30, 60, 230, 240, 220, 40, 200, 60, 220, 20, 20, 20])
 pal = [bytes((x + 2 * y) // 3 % 6 for x in range(W)) for y in range(H)]
 png("map_palette.png", 3, 8, pal, chunk(b"PLTE", plte) + chunk(b"tRNS", bytes([255, 255, 255, 255, 128, 255])))
+# The same palette image as an interlaced GIF (POV-Ray 3.7 shows its rows in the stored order),
+# entry 4 transparent (graphic control extension),
+# coded as 4-bit literals with a clear code before every fifth one, so no code grows wider.
+def gif(name, w, h, palette, rows, transparent):
+    order = [y for start, step in ((0, 8), (4, 8), (2, 4), (1, 2)) for y in range(start, h, step)]
+    codes = []
+    for n, i in enumerate(i for y in order for i in rows[y]):
+        if n % 5 == 0: codes.append(8)
+        codes.append(i)
+    codes.append(9)
+    acc = bits = 0
+    data = bytearray()
+    for c in codes:
+        acc |= c << bits; bits += 4
+        while bits >= 8: data.append(acc & 255); acc >>= 8; bits -= 8
+    if bits: data.append(acc)
+    table = palette + bytes(48 - len(palette))
+    b = b"GIF89a" + struct.pack("<HHBBB", w, h, 0x83, 0, 0) + table
+    b += bytes([0x21, 0xF9, 4, 1, 0, 0, transparent, 0])
+    b += b"\x2c" + struct.pack("<HHHHB", 0, 0, w, h, 0x40) + bytes([3])
+    for i in range(0, len(data), 255): b += bytes([len(data[i:i + 255])]) + bytes(data[i:i + 255])
+    open(os.path.join(out, name), "wb").write(b + b"\x00\x3b")
+gif("map_palette.gif", W, H, plte, pal, 4)
 # grey heights for bump maps: two bumps and a ridge
 def height(x, y):
     h = 0.5 + 0.4 * math.exp(-((x - 6) ** 2 + (y - 5) ** 2) / 8) - 0.3 * math.exp(-((x - 14) ** 2 + (y - 9) ** 2) / 6)
