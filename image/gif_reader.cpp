@@ -5,45 +5,18 @@
 // and POT, Fractint's
 // continuous-potential files: a GIF twice as wide as the field, each row's left half the high
 // bytes of 16-bit heights and its right half the low bytes.
-#include <fstream>
-#include <iterator>
-
-#include "image/image_file.hpp"
+#include "image/byte_reader.hpp"
 
 namespace lumen::image {
 
 namespace {
 
-class Bytes {
-public:
-    explicit Bytes(std::string s) : s_(std::move(s)) {}
-    unsigned u8() {
-        if (pos_ >= s_.size()) throw ImageError("the GIF file is truncated");
-        return uint8_t(s_[pos_++]);
-    }
-    unsigned u16() {
-        const unsigned lo = u8();
-        return lo | (u8() << 8);
-    }
-    void skip(size_t n) {
-        if (s_.size() - pos_ < n) throw ImageError("the GIF file is truncated");
-        pos_ += n;
-    }
-    // The data sub-blocks that follow (each a length byte, 0 ending them), appended to `out`.
-    void sub_blocks(std::string* out) {
-        for (unsigned n = u8(); n != 0; n = u8()) {
-            if (s_.size() - pos_ < n) throw ImageError("the GIF file is truncated");
-            if (out) out->append(s_, pos_, n);
-            pos_ += n;
-        }
-    }
+// The data sub-blocks that follow (each a length byte, 0 ending them), appended to `out`.
+void sub_blocks(ByteReader& in, std::string& out) {
+    for (unsigned n = in.u8(); n != 0; n = in.u8()) in.take(n, out);
+}
 
-private:
-    std::string s_;
-    size_t pos_ = 0;
-};
-
-std::vector<std::array<float, 4>> read_palette(Bytes& in, unsigned size) {
+std::vector<std::array<float, 4>> read_palette(ByteReader& in, unsigned size) {
     std::vector<std::array<float, 4>> p(size);
     for (auto& c : p) {
         const float r = in.u8() / 255.0f, g = in.u8() / 255.0f, b = in.u8() / 255.0f;
@@ -106,9 +79,7 @@ std::vector<uint8_t> decode_lzw(const std::string& data, unsigned min_size, size
 }  // namespace
 
 ImageFile read_gif(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ImageError("cannot open the file");
-    Bytes in(std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>()));
+    ByteReader in(path, "GIF");
     std::string magic;
     for (int i = 0; i < 6; ++i) magic += char(in.u8());
     if (magic != "GIF87a" && magic != "GIF89a") throw ImageError("not a GIF file");
@@ -125,7 +96,7 @@ ImageFile read_gif(const std::string& path) {
         if (kind == 0x21) {  // an extension: its label, then its sub-blocks
             const unsigned label = in.u8();
             std::string block;
-            in.sub_blocks(&block);
+            sub_blocks(in, block);
             if (label == 0xF9 && block.size() >= 4)  // graphic control: flags, delay, index
                 transparent = block[0] & 1 ? int(uint8_t(block[3])) : -1;
             continue;
@@ -139,7 +110,7 @@ ImageFile read_gif(const std::string& path) {
         if (img.palette.empty()) throw ImageError("the GIF file has no palette");
         const unsigned min_size = in.u8();
         std::string data;
-        in.sub_blocks(&data);
+        sub_blocks(in, data);
         // Interlaced rows stay in the order stored: POV-Ray 3.7 shows them so (an interlaced
         // image_map matched only without reordering them, tests/patterns/image_map.pov Kind 21).
         img.indices = decode_lzw(data, min_size, img.pixels());

@@ -1,38 +1,13 @@
 // Truevision TGA: colour-mapped (1), true-colour (2) and grey (3) images, uncompressed or RLE
 // (9, 10, 11); 15/16-bit (5 bits a channel), 24 and 32-bit pixels; either origin.
-#include <fstream>
-#include <iterator>
-
-#include "image/image_file.hpp"
+#include "image/byte_reader.hpp"
 
 namespace lumen::image {
 
 namespace {
 
-class Bytes {
-public:
-    explicit Bytes(std::string s) : s_(std::move(s)) {}
-    unsigned u8() {
-        if (pos_ >= s_.size()) throw ImageError("the TGA file is truncated");
-        return uint8_t(s_[pos_++]);
-    }
-    unsigned u16() {
-        const unsigned lo = u8();
-        return lo | (u8() << 8);
-    }
-    void skip(size_t n) {
-        if (s_.size() - pos_ < n) throw ImageError("the TGA file is truncated");
-        pos_ += n;
-    }
-    size_t size() const { return s_.size(); }
-
-private:
-    std::string s_;
-    size_t pos_ = 0;
-};
-
 // One pixel or palette entry of `bits` bits as RGBA in [0, 1] (grey: r = g = b).
-std::array<float, 4> read_colour(Bytes& in, unsigned bits, bool grey) {
+std::array<float, 4> read_colour(ByteReader& in, unsigned bits, bool grey) {
     if (grey) {
         const float v = in.u8() / 255.0f;
         const float a = bits == 16 ? in.u8() / 255.0f : 1.0f;
@@ -50,9 +25,7 @@ std::array<float, 4> read_colour(Bytes& in, unsigned bits, bool grey) {
 }  // namespace
 
 ImageFile read_tga(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ImageError("cannot open the file");
-    Bytes in(std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>()));
+    ByteReader in(path, "TGA");
     if (in.size() < 18) throw ImageError("not a TGA file");
     const unsigned id_length = in.u8(), map_type = in.u8(), type = in.u8();
     const unsigned map_first = in.u16(), map_length = in.u16(), map_bits = in.u8();
