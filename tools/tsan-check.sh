@@ -2,8 +2,9 @@
 # Usage: tools/tsan-check.sh LUMEN_TSAN_BINARY
 # Renders multithreaded (+WT2) scenes with a ThreadSanitizer build of lumen (`make tsan`
 # builds one) and fails if TSan reports anything: the examples with anti-aliasing, an
-# animation, and cornell.pov with both radiosity displays (the irradiance cache is shared by
-# the render threads). Small sizes: TSan runs 5-15x slower.
+# animation, the teapot (meshes traced through Embree), and cornell.pov with both radiosity
+# displays (the irradiance cache is shared by the render threads). Small sizes: TSan runs
+# 5-15x slower.
 set -uo pipefail
 lumen=$(realpath "${1:?usage: tools/tsan-check.sh LUMEN_TSAN_BINARY}")
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,6 +28,8 @@ for scene in showcase glass lights csg patterns antialias irid isosurface media 
 done
 check animation "$root/examples/animation.pov" +W48 +H36 +KFI1 +KFF3
 check focal-blur "$root/tests/cameras/focal_blur.pov" +W48 +H36 +A0.3 Declare=S=60
+# Bicubic patches tessellated into meshes big enough for Embree (render/shapes/mesh_embree.hpp).
+check teapot /usr/share/povray-3.7/scenes/advanced/teapot/teapot.pov +W96 +H72 +A0.3
 cornell=/usr/share/povray-3.7/scenes/radiosity/cornell.pov
 check cornell-preview "$cornell" +W60 +H60 -A Radiosity_Display=preview
 check cornell-gather "$cornell" +W60 +H60 -A Radiosity_Display=gather
