@@ -46,11 +46,10 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal travers
     out->mesh = &m;
     std::vector<TriangleCore> tris;
     std::vector<uint32_t> faces;
-    std::vector<Aabb> boxes;
-    std::vector<uint32_t> corners;  // each triangle's vertex indices, for Embree
+    std::vector<uint32_t> corners;  // each triangle's vertex indices
     tris.reserve(m.faces.size());
     faces.reserve(m.faces.size());
-    boxes.reserve(m.faces.size());
+    corners.reserve(3 * m.faces.size());
     for (size_t f = 0; f < m.faces.size(); ++f) {
         const auto& v = m.faces[f].v;
         if (!valid_index(v[0], m.vertices.size()) || !valid_index(v[1], m.vertices.size()) ||
@@ -59,13 +58,12 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal travers
         TriangleCore tri;
         if (!make_triangle_core(m.vertices[v[0]], m.vertices[v[1]], m.vertices[v[2]], tri))
             continue;  // degenerate faces are skipped
-        Aabb box;
-        for (int i = 0; i < 3; ++i) box.expand(m.vertices[v[i]]);
         tris.push_back(tri);
         faces.push_back(uint32_t(f));
-        for (int i = 0; i < 3; ++i) corners.push_back(uint32_t(v[i]));
-        boxes.push_back(box);
-        out->box.expand(box);
+        for (int i = 0; i < 3; ++i) {
+            corners.push_back(uint32_t(v[i]));
+            out->box.expand(m.vertices[v[i]]);
+        }
     }
     out->valid = !tris.empty();
     if (traversal == MeshTraversal::Best && tris.size() >= kEmbreeMinTriangles) {
@@ -76,6 +74,10 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal travers
         }
     }
     if (traversal != MeshTraversal::Scan && !tris.empty()) {
+        // The triangles' boxes only here: a mesh Embree takes never needs them.
+        std::vector<Aabb> boxes(tris.size());
+        for (size_t t = 0; t < tris.size(); ++t)
+            for (int i = 0; i < 3; ++i) boxes[t].expand(m.vertices[corners[3 * t + size_t(i)]]);
         Bvh binary;
         binary.build(boxes, 4);
         out->bvh = WideBvh(binary);

@@ -60,6 +60,13 @@ struct Query {
     int crossings = 0;
     uint32_t seen[16];
     int seen_count = 0;
+
+    Query(const EmbreeMesh::Plane* p, const LocalRay& r, double t0, double t1,
+          RTCFilterFunctionN filter)
+        : planes(p), ray(&r), tmin(t0), tmax(t1) {
+        rtcInitIntersectContext(&base);
+        base.filter = filter;
+    }
 };
 
 // The distance to triangle `tri`'s plane in double precision, if within (tmin, tmax); Embree's
@@ -106,6 +113,7 @@ void crossing_filter(const RTCFilterFunctionNArguments* args) {
     ++q.crossings;
 }
 
+// False for NaN and infinities too.
 bool fits_float(const glm::dvec3& v) {
     return std::abs(v.x) < 1e30 && std::abs(v.y) < 1e30 && std::abs(v.z) < 1e30;
 }
@@ -173,7 +181,7 @@ namespace {
 bool embree_ray(const LocalRay& r, const glm::dvec3& centre, double tmin, double tmax,
                 RTCRay& ray) {
     const glm::dvec3 o = r.o - centre;
-    if (!fits_float(o) || !fits_float(r.d) || !std::isfinite(r.d.x + r.d.y + r.d.z)) return false;
+    if (!fits_float(o) || !fits_float(r.d)) return false;  // NaN and infinities included
     ray.org_x = float(o.x), ray.org_y = float(o.y), ray.org_z = float(o.z);
     ray.dir_x = float(r.d.x), ray.dir_y = float(r.d.y), ray.dir_z = float(r.d.z);
     ray.tnear = std::max(0.0f, below(tmin));
@@ -188,9 +196,7 @@ bool embree_ray(const LocalRay& r, const glm::dvec3& centre, double tmin, double
 }  // namespace
 
 bool EmbreeMesh::nearest(const LocalRay& r, double tmin, double tmax, Found& out) const {
-    Query q{};
-    rtcInitIntersectContext(&q.base);
-    q.planes = planes_.data(), q.ray = &r, q.tmin = tmin, q.tmax = tmax;
+    Query q(planes_.data(), r, tmin, tmax, nullptr);
     RTCRayHit rh;
     if (!embree_ray(r, centre_, tmin, tmax, rh.ray)) return false;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -207,10 +213,7 @@ bool EmbreeMesh::nearest(const LocalRay& r, double tmin, double tmax, Found& out
 }
 
 bool EmbreeMesh::any(const LocalRay& r, double tmin, double tmax, Found& out) const {
-    Query q{};
-    rtcInitIntersectContext(&q.base);
-    q.base.filter = confirm_filter;
-    q.planes = planes_.data(), q.ray = &r, q.tmin = tmin, q.tmax = tmax;
+    Query q(planes_.data(), r, tmin, tmax, confirm_filter);
     RTCRay ray;
     if (!embree_ray(r, centre_, tmin, tmax, ray)) return false;
     rtcOccluded1(static_cast<RTCScene>(scene_), &q.base, &ray);
@@ -220,10 +223,7 @@ bool EmbreeMesh::any(const LocalRay& r, double tmin, double tmax, Found& out) co
 }
 
 int EmbreeMesh::crossings(const LocalRay& r) const {
-    Query q{};
-    rtcInitIntersectContext(&q.base);
-    q.base.filter = crossing_filter;
-    q.planes = planes_.data(), q.ray = &r, q.tmin = 0, q.tmax = INFINITY;
+    Query q(planes_.data(), r, 0, INFINITY, crossing_filter);
     RTCRayHit rh;
     if (!embree_ray(r, centre_, 0, INFINITY, rh.ray)) return 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
