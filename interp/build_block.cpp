@@ -11,7 +11,7 @@ namespace {
 
 // Blocks built into typed values: the shapes of scene/shape_list.hpp, then the rest.
 const std::vector<std::string> kBuilt = scene::keywords_then(scene::kShapeKeywords, {
-    "object", "union", "merge", "intersection", "difference", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
+    "object", "union", "merge", "intersection", "difference", "light_group", "texture", "pigment", "finish", "normal", "interior", "material", "camera",
     "light_source", "transform", "color_map", "colour_map", "pigment_map", "texture_map",
     "normal_map", "fog", "rainbow", "sky_sphere", "media", "density", "density_map"});
 // Blocks that only mean something inside a parent: returned as BlockValue.
@@ -189,8 +189,7 @@ void apply_top_level(BuildContext& ctx, scene::Scene& scene, const Item& item) {
             textured->texture.push_back(default_texture(ctx, obj->loc));
             obj = textured;
         }
-        scene.objects.push_back(obj);
-        collect_csg_lights(*obj, scene::Transform{}, scene.lights);
+        scene.objects.push_back(place_csg_lights(obj, scene::Transform{}, scene));
     } else if (v.is<std::shared_ptr<const scene::Camera>>()) {
         scene.camera = *v.as<std::shared_ptr<const scene::Camera>>();
     } else if (v.is<std::shared_ptr<const scene::Light>>()) {

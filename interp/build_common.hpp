@@ -183,9 +183,12 @@ scene::Light build_light(ItemCursor& cur);
 // Moves a light (position, point_at, area axes, looks_like, projected_through) by `t`.
 void transform_light(scene::Light& light, const scene::Transform& t);
 // The light sources inside CSG `obj` and its descendants, moved to world space (`to_world` is
-// the transform of what encloses obj), appended to `out` (build_csg.cpp).
-void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
-                        std::vector<scene::Light>& out);
+// the transform of what encloses obj), appended to the scene's lights; the light_groups
+// inside are numbered (Csg::light_group, and Light::group of the lights written directly in
+// them). Returns obj, or a copy of the path down to each group where it holds any
+// (build_csg.cpp).
+scene::ObjectPtr place_csg_lights(const scene::ObjectPtr& obj, const scene::Transform& to_world,
+                                  scene::Scene& scene);
 scene::Fog build_fog(ItemCursor& cur);
 scene::Rainbow build_rainbow(ItemCursor& cur);
 // media { } and density { } (build_media.cpp). A density is a pigment whose colour scales the

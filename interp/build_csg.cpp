@@ -1,7 +1,7 @@
 // union / merge / intersection / difference: children first, then object modifiers.
 // Children keep an empty texture when none was given: the renderer lets them inherit the
 // CSG's texture. Light sources inside are kept apart and become scene lights when the CSG is
-// placed in the scene.
+// placed in the scene. A light_group is a union whose lights light only its members.
 #include "interp/build_common.hpp"
 
 namespace lumen::interp {
@@ -32,6 +32,7 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
     obj.loc = cur.block_loc();
     scene::Csg& csg = obj.shape.emplace<scene::Csg>();
     csg.op = csg_op(cur.what());
+    csg.is_light_group = cur.what() == "light_group";
     bool modifiers_seen = false;
     auto child = [&](const Item& item) {
         if (item.kind != Item::Kind::Value) return false;
@@ -57,9 +58,16 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
     auto modifier = [&](const Item& item) {
         if (child(item)) return true;
         modifiers_seen = true;
+        if (csg.is_light_group && item.kind == Item::Kind::Keyword &&
+            item.keyword == "global_lights") {
+            csg.global_lights = cur.optional_bool();
+            return true;
+        }
         return false;
     };
-    read_object_modifiers(cur, obj, modifier, {});
+    read_object_modifiers(cur, obj, modifier,
+                          csg.is_light_group ? std::vector<std::string>{"global_lights"}
+                                             : std::vector<std::string>{});
     if (csg.children.size() < 2 && csg.op != scene::CsgOp::Union)
         cur.warn(cur.block_loc(), cur.what() + " should have at least 2 objects");
     if (csg.children.empty() && csg.lights.empty())
@@ -67,19 +75,33 @@ scene::ObjectPtr build_csg(ItemCursor& cur) {
     return std::make_shared<scene::Object>(std::move(obj));
 }
 
-void collect_csg_lights(const scene::Object& obj, const scene::Transform& to_world,
-                        std::vector<scene::Light>& out) {
-    const auto* csg = std::get_if<scene::Csg>(&obj.shape);
-    if (!csg) return;
-    const scene::Transform world = obj.transform.then(to_world);
+scene::ObjectPtr place_csg_lights(const scene::ObjectPtr& obj, const scene::Transform& to_world,
+                                  scene::Scene& scene) {
+    const auto* csg = obj ? std::get_if<scene::Csg>(&obj->shape) : nullptr;
+    if (!csg) return obj;
+    const scene::Transform world = obj->transform.then(to_world);
+    // Each placement of a light_group is a group of its own: `object { G }` twice gives two.
+    // A light in a plain CSG lights the whole scene even inside a group (POV-Ray, probed).
+    const uint32_t own = csg->is_light_group ? ++scene.light_groups : 0;
     for (const auto& l : csg->lights) {
         if (!l) continue;
         scene::Light light = *l;
         transform_light(light, world);
-        out.push_back(std::move(light));
+        light.group = own;
+        scene.lights.push_back(std::move(light));
     }
-    for (const auto& c : csg->children)
-        if (c) collect_csg_lights(*c, world, out);
+    std::vector<scene::ObjectPtr> children;
+    bool changed = own != 0;
+    for (const auto& c : csg->children) {
+        children.push_back(place_csg_lights(c, world, scene));
+        changed = changed || children.back() != c;
+    }
+    if (!changed) return obj;  // no light_group inside: the object is shared as it is
+    auto placed = std::make_shared<scene::Object>(*obj);
+    auto& placed_csg = std::get<scene::Csg>(placed->shape);
+    placed_csg.children = std::move(children);
+    placed_csg.light_group = own;
+    return placed;
 }
 
 }  // namespace lumen::interp

@@ -349,7 +349,8 @@ bool is_unsupported_shape(const std::string& keyword) {
 
 scene::ObjectPtr build_object(ItemCursor& cur) {
     const std::string& kw = cur.what();
-    if (kw == "union" || kw == "merge" || kw == "intersection" || kw == "difference")
+    if (kw == "union" || kw == "merge" || kw == "intersection" || kw == "difference" ||
+        kw == "light_group")
         return build_csg(cur);
     if (kw == "object") return read_object_copy(cur);
 #define LUMEN_READ_SHAPE(T, ...) \

@@ -225,5 +225,30 @@ TEST_F(BuildObject, PhotonsBlock) {
     EXPECT_FALSE(run("sphere { 0, 1 }").objects[0]->photons.has_value());
 }
 
+// Each placement of a light_group is a group of its own, with its lights moved along; a light
+// in a plain union inside a group lights the whole scene (group 0).
+TEST_F(BuildObject, LightGroupsNumberedPerPlacement) {
+    scene::Scene s = run(
+        "#declare G = light_group { light_source { <1,0,0>, 1 } sphere { 0, 1 } "
+        "union { light_source { 0, 1 } sphere { 0, 1 } } global_lights }\n"
+        "object { G translate y }\nobject { G }\nsphere { 0, 1 }");
+    EXPECT_EQ(s.light_groups, 2u);
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_EQ(s.lights[0].group, 1u);
+    expect_vec(s.lights[0].position, {1, 1, 0});
+    EXPECT_EQ(s.lights[1].group, 0u);
+    EXPECT_EQ(s.lights[2].group, 2u);
+    ASSERT_EQ(s.objects.size(), 3u);
+    for (uint32_t i = 0; i < 2; ++i) {
+        const auto& g = std::get<scene::Csg>(s.objects[i]->shape);
+        EXPECT_TRUE(g.is_light_group);
+        EXPECT_TRUE(g.global_lights);
+        EXPECT_EQ(g.light_group, i + 1);
+        EXPECT_EQ(g.op, scene::CsgOp::Union);
+    }
+    EXPECT_EQ(error_of("union { sphere { 0, 1 } global_lights on }"),
+              "t.pov:1:25: error: 'global_lights' is not an union keyword");
+}
+
 }  // namespace
 }  // namespace lumen::interp::testing

@@ -462,7 +462,9 @@ struct ShapeDumper {
     }
     void operator()(const scene::Csg& c) const {
         static const char* ops[] = {"union", "merge", "intersection", "difference"};
-        o.put("type", Json::str(ops[static_cast<int>(c.op)]));
+        o.put("type", Json::str(c.is_light_group ? "light_group" : ops[static_cast<int>(c.op)]));
+        put_if(o, "light_group", double(c.light_group), 0.0);
+        put_if(o, "global_lights", c.global_lights, false);
     }
     void operator()(const scene::UnsupportedShape& u) const {
         o.put("type", Json::str("unsupported"));
@@ -562,6 +564,7 @@ Json light(const scene::Light& l) {
     put_if(o, "area_illumination", l.area_illumination, d.area_illumination);
     put_if(o, "media_interaction", l.media_interaction, d.media_interaction);
     put_if(o, "media_attenuation", l.media_attenuation, d.media_attenuation);
+    put_if(o, "group", double(l.group), 0.0);
     if (l.looks_like) o.put("looks_like", object(*l.looks_like));
     if (l.projected_through) o.put("projected_through", object(*l.projected_through));
     put_nonempty(o, "photons", light_photons(l.photons));

@@ -146,6 +146,8 @@ void resolve_hit(const NodeStore& store, const Ray& ray, double t, const NodeHit
     hit.hollow = leaf.hollow;
     hit.photons = leaf.photons;
     hit.photon_target = leaf.photon_target;
+    hit.light_group = leaf.light_group;
+    hit.global_lights = leaf.global_lights;
     hit.textured_blob = nullptr;
     if (leaf.kind == NodeKind::Shape) {
         const auto* blob = std::get_if<BlobShape>(&store.shapes[leaf.shape]);

@@ -36,6 +36,9 @@ struct Hit {
     // among the primitive and its CSG ancestors (null: none), which photons are shot at.
     const scene::ObjectPhotons* photons = nullptr;
     const scene::Object* photon_target = nullptr;
+    // The innermost light_group it lies in (0: none) and that group's global_lights.
+    uint32_t light_group = 0;
+    bool global_lights = true;
     // A blob whose components have textures of their own, which shading blends by their
     // densities at `local_point` (the hit in the blob's space); null otherwise.
     const BlobShape* textured_blob = nullptr;

@@ -58,6 +58,7 @@ std::vector<LightSource> prepare_lights(const std::vector<scene::Light>& lights)
         l.cylinder = s.type == scene::LightType::Cylinder;
         l.parallel = s.parallel || l.cylinder;
         l.shadowless = s.shadowless;
+        l.group = s.group;
         if (l.spot) {
             l.cos_radius = std::cos(to_radians(s.radius));
             l.cos_falloff = std::cos(to_radians(s.falloff));

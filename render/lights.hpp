@@ -26,7 +26,16 @@ struct LightSource {
     glm::dvec3 axis1{0}, axis2{0};
     // projected_through: light only passes along rays that cross this object (null = none).
     std::shared_ptr<const Geometry> projection;
+    uint32_t group = 0;  // scene::Light::group: 0 lights everything (within LightScope)
 };
+
+// Whether `light` lights a surface in light_group `group` (0: none) that the scene's lights
+// reach where `global_lights` (POV-Ray 3.7, probed: a group's lights light only its members,
+// not those of a light_group inside it; the scene's lights light a group's members only with
+// `global_lights on`, off by default).
+inline bool lights_surface(const LightSource& light, uint32_t group, bool global_lights) {
+    return light.group == 0 ? group == 0 || global_lights : light.group == group;
+}
 
 // Direction and distance to the light and its attenuated colour at one surface point.
 struct LightSample {

@@ -121,6 +121,9 @@ private:
             for (const LightSource& l : *env_->lights) {
                 if (n_lights_ == kMaxLitLights) break;
                 if (l.shadowless || (l.light && !l.light->media_interaction)) continue;
+                // A light_group's lights scatter only in its members' media; lumen leaves
+                // them out of media (no corpus scene puts media in a group).
+                if (l.group != 0) continue;
                 if (const auto r = lit_range(l, ray_, depth)) {
                     lights_[n_lights_] = &l;
                     ranges_[n_lights_++] = *r;

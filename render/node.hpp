@@ -43,6 +43,8 @@ struct Node {
     // none).
     const scene::ObjectPhotons* photons = nullptr;
     const scene::Object* photon_target = nullptr;
+    uint32_t light_group = 0;  // the innermost light_group it lies in (0: none)
+    bool global_lights = true; // the scene's lights reach it (node_compile: group_inside)
 };
 
 struct NodeStore {
@@ -64,6 +66,8 @@ struct NodeContext {
     const scene::ObjectPhotons* photons = nullptr;  // an enclosing object's photons { }
     const scene::Object* photon_target = nullptr;   // an enclosing photon target
     bool target_splits = false;  // it is a union whose members are photon targets themselves
+    uint32_t light_group = 0;    // the innermost enclosing light_group, and whether
+    bool global_lights = true;   // the scene's lights reach inside
     bool no_shadow = false, no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;
     bool invert = false, flip = false;

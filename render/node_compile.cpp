@@ -48,6 +48,16 @@ const scene::Object* outer_target(const NodeContext& ctx, const scene::Object& o
     return ctx.photon_target || (o.photons && o.photons->target) ? &o : nullptr;
 }
 
+// The light_group of what lies inside `o`: o's own where o is a placed group, else the one
+// around o. The scene's lights reach it only where every group around it says global_lights
+// on (POV-Ray, probed: an outer group's default `off` holds inside an inner group's `on`).
+void group_inside(NodeContext& inner, const NodeContext& outer, const scene::Object& o) {
+    const auto* csg = std::get_if<scene::Csg>(&o.shape);
+    const bool own = csg && csg->light_group != 0;
+    inner.light_group = own ? csg->light_group : outer.light_group;
+    inner.global_lights = outer.global_lights && (!own || csg->global_lights);
+}
+
 bool splits_for_photons(const scene::Object& o) {
     const auto* csg = std::get_if<scene::Csg>(&o.shape);
     return csg && csg->op == scene::CsgOp::Union && o.split_union;
@@ -116,6 +126,8 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     node.interior = object.interior ? &*object.interior : ctx.interior;
     node.photons = inherited_photons(ctx, object);
     node.photon_target = outer_target(ctx, object);
+    node.light_group = ctx.light_group;
+    node.global_lights = ctx.global_lights;
 
     std::vector<uint32_t> clips = compile_helpers(store, object.clipped_by, ctx, accelerate, ctx.clips);
     std::vector<uint32_t> bounds = compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
@@ -137,6 +149,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         inner.photons = node.photons;
         inner.photon_target = node.photon_target;
         inner.target_splits = node.photon_target == &object && splits_for_photons(object);
+        group_inside(inner, ctx, object);
         pass_flags(inner, node);
         inner.flip = node.flip;
         inner.depth = ctx.depth + 1;
@@ -234,6 +247,7 @@ void compile_top_level(NodeStore& store, const scene::Object& object,
         inner.photons = inherited_photons(ctx, o);
         inner.photon_target = outer_target(ctx, o);
         inner.target_splits = inner.photon_target == &o && splits_for_photons(o);
+        group_inside(inner, ctx, o);
         inner.clips = compile_helpers(store, o.clipped_by, ctx, true, ctx.clips);
         inner.bounds = compile_helpers(store, o.bounded_by, ctx, true, ctx.bounds);
         contexts.push_back(std::move(inner));

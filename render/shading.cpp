@@ -225,7 +225,7 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
     if (!env.lights) return out;
     for (const LightSource& l : *env.lights) {
         LightSample ls;
-        if (!illuminate(l, s.point, ls)) continue;
+        if (!lights_surface(l, s.light_group, s.global_lights) || !illuminate(l, s.point, ls)) continue;
         const double cos_light = glm::dot(s.normal, ls.dir);
         bool backside = false;
         double intensity_cos = cos_light;

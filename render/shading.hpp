@@ -29,6 +29,8 @@ struct SurfaceSample {
     bool double_illuminate = false;
     double film_thickness = 0;   // irid: the film's thickness here (irid_thickness)
     bool collects_photons = true;  // the object's photons { collect }
+    uint32_t light_group = 0;   // Hit::light_group and global_lights
+    bool global_lights = true;
 };
 
 // Scene-wide lighting state shared by all threads (read-only while rendering).

@@ -312,6 +312,8 @@ RayColour Tracer::shade_layers(const Ray& ray, const Hit& hit, const scene::Laye
         s.finish = layer.finish;
         s.double_illuminate = double_illuminate;
         s.collects_photons = collects_photons(hit.photons);
+        s.light_group = hit.light_group;
+        s.global_lights = hit.global_lights;
         if (layer.finish->irid_amount > 0)  // once per layer: lights and reflection share it
             s.film_thickness = irid_thickness(*layer.finish, s.point, env_.noise_generator);
         if (i == 0) top_film = s.film_thickness;

@@ -33,6 +33,9 @@ struct Light {
     ObjectPtr looks_like;          // already translated to the light, flagged no_shadow
     ObjectPtr projected_through;
     LightPhotons photons;
+    // The light_group it belongs to (Csg::light_group): it lights that group's members only.
+    // 0: a light of the whole scene.
+    uint32_t group = 0;
     std::vector<Unsupported> unsupported;
     SourceLoc loc;
 };

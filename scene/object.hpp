@@ -2,6 +2,7 @@
 // Geometry is stored in the object's own coordinates as written; `transform` maps it to world.
 #pragma once
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <variant>
@@ -30,6 +31,11 @@ struct Csg {
     // Light sources written inside the CSG, in its coordinates: lights of the scene that move
     // with it (the interpreter adds them to Scene::lights), never geometry.
     std::vector<std::shared_ptr<const Light>> lights{};
+    // light_group { }: a union whose lights light only its members (and whose members get
+    // the scene's other lights only with `global_lights on`). `light_group` numbers the group
+    // once it is placed in the scene (interp: place_csg_lights); 0 elsewhere.
+    bool is_light_group = false, global_lights = false;
+    uint32_t light_group = 0;
 };
 // A shape lumen does not render (blob, isosurface, text, ...); rendering it is an error.
 struct UnsupportedShape { Unsupported what; };

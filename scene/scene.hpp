@@ -80,6 +80,7 @@ struct Scene {
     bool version_given = false;        // a #version directive (or Version=) was seen
     Camera camera;
     std::vector<Light> lights;
+    uint32_t light_groups = 0;  // light_group blocks placed: Light::group runs 1..this
     std::vector<ObjectPtr> objects;
     GlobalSettings globals;
     Colour background{0, 0, 0, 0, 0};

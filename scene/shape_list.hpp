@@ -63,7 +63,7 @@ inline constexpr std::string_view kShapeKeywords[] = {
 
 // Object blocks POV-Ray has and lumen does not render yet: each becomes an UnsupportedShape.
 inline constexpr std::string_view kUnsupportedShapeKeywords[] = {
-    "lemon", "light_group"};
+    "lemon"};
 
 // `first`, then `rest`: keyword tables that start with one of the lists above.
 template <size_t N>

@@ -347,6 +347,7 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
     std::vector<Combo> combos;
     for (const LightSource& l : frame.lights()) {
         if (l.shadowless || max_of(l.colour) <= 0) continue;  // fill lights shoot nothing
+        if (l.group != 0) continue;  // a light_group's lights shoot no photons in lumen
         for (const Target& t : targets) {
             if (!shoots(l, *t.flags)) continue;
             Combo c{};
