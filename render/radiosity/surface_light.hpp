@@ -1,5 +1,5 @@
-// What radiosity needs of a surface at one point, meshed or not: the top layer's diffuse
-// reflectance ρ (diffuse × pigment), emission E and brilliance, and the direct light H as
+// What radiosity needs of a surface at one point, meshed or not: its diffuse reflectance ρ
+// (diffuse × pigment, layers stacked as the tracer stacks them), emission E and brilliance, and the direct light H as
 // POV-Ray's radiosity rays see it.
 #pragma once
 #include <vector>
@@ -24,11 +24,12 @@ struct SurfaceMaterial {
 // 0): the factor ambient is multiplied by, ambient_light there and 0 from 3.7 on.
 glm::dvec3 ambient_emission(const scene::Scene& scene);
 
-// The material of the top layer of `texture` at world point p.
+// The material of `texture` at world point p: its layers through the filter and transmit of
+// those above them; the top layer's brilliance.
 SurfaceMaterial surface_material(const scene::LayeredTexture* texture, const glm::dvec3& p,
                                  const glm::dvec3& ambient_emission);
 
-// True when the top layer has diffuse 0 wherever it is (every texture_map entry too): such a
+// True when every layer has diffuse 0 wherever it is (every texture_map entry too): such a
 // surface only emits, and needs no light of its own.
 bool never_diffuse(const scene::LayeredTexture* texture);
 
