@@ -50,7 +50,7 @@ scene::PhotonSettings build_global_photons(ItemCursor& cur, std::vector<scene::U
             p.adc_bailout = std::max(0.0, cur.expect_float(w));
         } else if (w == "save_file" || w == "load_file") {
             (w == "save_file" ? p.save_file : p.load_file) = cur.expect_string(w);
-            unsupported.push_back({"photons " + w, item.loc});
+            p.file_loc = item.loc;
         } else if (w == "autostop") {
             p.autostop = cur.expect_float(w);
         } else if (w == "expand_thresholds") {

@@ -25,8 +25,8 @@ struct PhotonSettings {
     int expand_min = 35;
     // Gather radius and its multiplier for surfaces, then media; radius <= 0: automatic.
     double radius = 0, radius_mult = 1, media_radius = 0, media_radius_mult = 1;
-    std::string save_file, load_file;
-    SourceLoc loc;
+    std::string save_file, load_file;  // render/photons/photon_file.hpp
+    SourceLoc loc, file_loc;           // the block; the save_file or load_file keyword
 };
 
 struct ObjectPhotons {

@@ -50,6 +50,10 @@ public:
 
     // Sorts the array into the kd-tree (each range split at its median on its widest axis).
     void build();
+    // Takes an array build() left (a saved map) as the tree it is: building it again could
+    // order ties otherwise, and the loaded map would gather differently from the saved one.
+    // A damaged order gathers wrongly but safely (the tree is implicit in the index ranges).
+    void assign_built(std::vector<Photon> photons) { photons_ = std::move(photons); }
     // POV's automatic start radius from the photon density around sample photons (`radius`
     // not given), times `multiplier`; deterministic.
     double choose_radius(int gather_max, double multiplier) const;

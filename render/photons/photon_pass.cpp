@@ -19,6 +19,7 @@
 #include "render/node.hpp"
 #include "scene/object_extents.hpp"
 #include "render/normal_frame.hpp"
+#include "render/photons/photon_file.hpp"
 #include "render/photons/photon_flags.hpp"
 #include "render/shading.hpp"
 #include "render/shadows.hpp"
@@ -331,6 +332,17 @@ void shoot_ring(const Geometry& geometry, const Combo& c, size_t combo_index, si
     }
 }
 
+// How the tracer gathers from a built map: the block's gather settings and start radius.
+void set_gather(PhotonPass& pass, const scene::PhotonSettings& settings) {
+    pass.gather.min = settings.gather_min;
+    pass.gather.max = settings.gather_max;
+    pass.gather.expand_percent = settings.expand_percent;
+    pass.gather.expand_min = settings.expand_min;
+    pass.gather.radius = settings.radius > 0 ? settings.radius * settings.radius_mult
+                                             : pass.surface.choose_radius(settings.gather_max,
+                                                                          settings.radius_mult);
+}
+
 }  // namespace
 
 std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads) {
@@ -339,6 +351,11 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
     const scene::PhotonSettings& settings = *scene.globals.photons;
     if (settings.gather_max <= 0) return nullptr;
     auto pass = std::make_unique<PhotonPass>();
+    if (!settings.load_file.empty()) {
+        load_photons(*pass, settings.load_file, settings.file_loc);
+        set_gather(*pass, settings);
+        return pass;
+    }
     const Geometry& geometry = frame.geometry();
 
     std::vector<Target> targets;
@@ -439,13 +456,8 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
     }
     results.clear();
     pass->surface.build();
-    pass->gather.min = settings.gather_min;
-    pass->gather.max = settings.gather_max;
-    pass->gather.expand_percent = settings.expand_percent;
-    pass->gather.expand_min = settings.expand_min;
-    pass->gather.radius = settings.radius > 0 ? settings.radius * settings.radius_mult
-                                              : pass->surface.choose_radius(settings.gather_max,
-                                                                            settings.radius_mult);
+    set_gather(*pass, settings);
+    if (!settings.save_file.empty()) save_photons(*pass, settings.save_file, settings.file_loc);
     return pass;
 }
 

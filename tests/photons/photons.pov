@@ -7,7 +7,10 @@
 //  5 a spotlight with fade_power, a coloured glass union with fade, phong on the floor
 //  6 refraction on at the glass and off at the light: nothing shot, a filtered shadow
 //  7 an area light shooting from its grid (photons { area_light })
+// File 1 saves the map to photons.ph and File 2 loads it in place of shooting (tests/photons:
+// the two renders are the same image).
 #ifndef (Kind) #declare Kind = 0; #end
+#ifndef (File) #declare File = 0; #end
 #version 3.7;
 global_settings {
   assumed_gamma 1
@@ -17,6 +20,8 @@ global_settings {
     #case (7) spacing 0.02 radius 0.08 #break
     #else spacing 0.01 radius 0.06
     #end
+    #if (File = 1) save_file "photons.ph" #end
+    #if (File = 2) load_file "photons.ph" #end
   }
 }
 camera { location <0, 3, -4> look_at <0, 0.3, 0> angle 45 }
