@@ -3,7 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <random>
+
+#include "base/whole_file.hpp"
 
 namespace lumen::render {
 
@@ -19,10 +20,7 @@ constexpr int kVersion = 1;
 }  // namespace
 
 void save_photons(const PhotonPass& pass, const std::string& path, const SourceLoc& loc) {
-    const std::string tmp = path + ".tmp" + std::to_string(std::random_device{}());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) bad_file(loc, path, "cannot be written");
+    const std::string why = write_whole_file(path, [&](std::ostream& out) {
         const std::vector<Photon>& photons = pass.surface.photons();
         out << kMagic << ' ' << kVersion << '\n'
             << photons.size() << ' ' << pass.shot << ' ';
@@ -31,16 +29,8 @@ void save_photons(const PhotonPass& pass, const std::string& path, const SourceL
         out << spacing << '\n';
         out.write(reinterpret_cast<const char*>(photons.data()),
                   std::streamsize(photons.size() * sizeof(Photon)));
-        out.close();
-        if (!out) {
-            std::remove(tmp.c_str());
-            bad_file(loc, path, "write failed");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        bad_file(loc, path, "cannot be written");
-    }
+    });
+    if (!why.empty()) bad_file(loc, path, why);
 }
 
 void load_photons(PhotonPass& pass, const std::string& path, const SourceLoc& loc) {

@@ -11,8 +11,8 @@
 
 namespace lumen::render {
 
-// Writes the pass's map, shot count and spacing under a name of its own, then renames it:
-// a reader sees a whole file or none. Throws LumenError at `loc` when it cannot.
+// Writes the pass's map, shot count and spacing whole or not at all (base/whole_file.hpp).
+// Throws LumenError at `loc` when it cannot.
 void save_photons(const PhotonPass& pass, const std::string& path, const SourceLoc& loc);
 
 // Reads a file save_photons wrote into `pass` (its map in the saved kd-tree order). Throws

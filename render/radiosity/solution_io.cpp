@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 #include "base/diagnostics.hpp"
+#include "base/whole_file.hpp"
 
 namespace lumen::render::radiosity {
 
@@ -19,9 +19,7 @@ constexpr int kVersion = 1;
     throw LumenError({}, "radiosity solution file '" + path + "': " + why);
 }
 
-void write_solution(const Solution& s, const std::string& tmp, const std::string& path) {
-    std::ofstream out(tmp);
-    if (!out) bad_file(path, "cannot be written");
+void write_solution(const Solution& s, std::ostream& out) {
     out << kMagic << ' ' << kVersion << '\n'
         << "scene " << s.scene_key << '\n'
         << "unknowns " << s.B.size() << '\n'
@@ -35,24 +33,13 @@ void write_solution(const Solution& s, const std::string& tmp, const std::string
         out << buf;
     }
     out << "end\n";
-    out.close();
-    if (!out) {
-        std::remove(tmp.c_str());
-        bad_file(path, "write failed");
-    }
 }
 
 }  // namespace
 
 void save_solution(const Solution& s, const std::string& path) {
-    // Written under a name of its own and renamed, so that a reader (another process of a
-    // farm sharing the file) sees a whole file or none.
-    const std::string tmp = path + ".tmp" + std::to_string(std::random_device{}());
-    write_solution(s, tmp, path);
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        bad_file(path, "cannot be written");
-    }
+    const std::string why = write_whole_file(path, [&](std::ostream& out) { write_solution(s, out); });
+    if (!why.empty()) bad_file(path, why);
 }
 
 Solution load_solution(const std::string& path, uint64_t scene_key, size_t unknowns) {
