@@ -16,6 +16,7 @@ namespace lumen::interp {
 // State the builders need from the evaluator.
 struct BuildContext {
     double language_version = 3.62;  // #version in effect now
+    bool version_given = false;       // a #version (or Version=) was seen
     std::optional<double> assumed_gamma;  // global_settings { assumed_gamma } read so far
     // #default { ... } settings; builders start new textures/pigments/finishes/normals from these.
     scene::PigmentPtr default_pigment;  // null = POV default (black)

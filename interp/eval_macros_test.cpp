@@ -39,6 +39,33 @@ TEST_F(MacroTest, AnObjectArgumentEndsWhereItsObjectEnds) {
     EXPECT_DOUBLE_EQ(num_var("Sum"), 4);  // a numeric argument is one expression
 }
 
+// shapes.inc's HFCreate_ opens a #write( or a mesh2 { in one #if branch and closes it in a
+// later #if: the body has a tree only once its conditions are decided at the call.
+TEST_F(MacroTest, ABodyOpenedAndClosedAcrossConditionalsRunsAsPovRayReadsIt) {
+    run("#macro Op(Add)\n"
+        "  #declare R = #if (Add) 2 + #else 2 * #end 5;\n"
+        "  #declare L = array[2] { #if (Add) 1, #else 3, #end 4 #if (Add) } #else } #end\n"
+        "#end\n"
+        "Op(1) #declare Sum = R; #declare First = L[0];\n"
+        "Op(0) #declare Product = R; #declare FirstOfOther = L[0];\n"
+        "Op(yes) #declare Again = R;\n");
+    EXPECT_DOUBLE_EQ(num_var("Sum"), 7);
+    EXPECT_DOUBLE_EQ(num_var("First"), 1);
+    EXPECT_DOUBLE_EQ(num_var("Product"), 10);
+    EXPECT_DOUBLE_EQ(num_var("Again"), 7);
+    EXPECT_DOUBLE_EQ(num_var("FirstOfOther"), 3);
+}
+
+TEST_F(MacroTest, ConditionsTheBodyAssignsAreNotDecidedEarly) {
+    // W changes inside the body, so deciding it at the call could differ from running it:
+    // the body's own syntax error stands, at its place.
+    EXPECT_EQ(error_of("#macro Bad()\n  #local W = 1;\n  #declare R = #if (W) 2 + #else 2 * #end 5;\n#end\nBad()\n"),
+              "test.pov:3:29: error: expected expression after operator, found 'else'");
+    // An error inside a decided body keeps its line and column.
+    EXPECT_EQ(error_of("#macro Op(Add)\n  #declare R = #if (Add) 2 + #else 2 * #end\n    Nope;\n#end\nOp(1)\n"),
+              "test.pov:3:5: error: undeclared identifier 'Nope'");
+}
+
 TEST_F(MacroTest, ParametersAreLocal) {
     run("#declare P = 100;\n#macro M(P) #declare Seen = P; #end\nM(7)\n");
     EXPECT_DOUBLE_EQ(num_var("Seen"), 7);

@@ -137,7 +137,6 @@ public:
     BuildContext ctx;
     Budget budget;  // steps and memory of the whole run
     SymbolTable symbols;
-    bool version_given = false;
 
 private:
     // The block built as `kw`, or kept as a BlockValue for its owner to read (`keep`).
@@ -167,6 +166,7 @@ private:
     void loop_limit(long long& iterations, const ast::Node& node, const char* what);
 
     const ast::Node& parse_macro_body(const ast::Node& macro);
+    const ast::Node* parse_decided_macro_body(const ast::Node& macro);
     const ast::Node& parse_file_cached(const std::string& path, SourceLoc from);
 
     SourceManager& sources_;
@@ -183,7 +183,9 @@ private:
     // Parsed trees stay alive for the whole run: MacroValue/FunctionValue point into them.
     std::vector<ast::NodePtr> trees_;
     std::map<std::string, const ast::Node*> file_cache_;
-    std::map<const ast::Node*, const ast::Node*> macro_cache_;
+    std::map<const ast::Node*, const ast::Node*> macro_cache_;  // null: no tree as written
+    // Trees of bodies parsed with decided conditions, by macro and blanked body text.
+    std::map<std::pair<const ast::Node*, std::string>, const ast::Node*> decided_macro_bodies_;
 };
 
 }  // namespace lumen::interp

@@ -19,7 +19,7 @@ Evaluator::Evaluator(SourceManager& sources, const InterpOptions& options, Warni
     };
     if (options_.version) {
         ctx.language_version = *options_.version;
-        version_given = true;
+        ctx.version_given = true;
     }
 }
 

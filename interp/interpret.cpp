@@ -38,7 +38,7 @@ scene::Scene run(SourceManager& sources, const SourceFile& file, const InterpOpt
         apply_top_level(ev.ctx, scene, item);
     });
     scene.language_version = ev.ctx.language_version;
-    scene.version_given = ev.version_given;
+    scene.version_given = ev.ctx.version_given;
     finish_scene(ev.ctx, scene);
     return scene;
 }

@@ -2,11 +2,31 @@
 // Arguments bind as #locals in a new frame; an argument written as a plain identifier is
 // passed by reference: the parameter's final value is copied back to it (POV-Ray 3.7 does
 // this even for `#local Param = ...`).
+#include "interp/conditional_text.hpp"
 #include "interp/evaluator.hpp"
 #include "interp/literal_items.hpp"
 #include "parser/parser.hpp"
 
 namespace lumen::interp {
+
+namespace {
+
+// The location of byte `byte` of a macro body that starts at `start`.
+SourceLoc location_in(const SourceFile& file, SourceLoc start, uint32_t byte) {
+    SourceLoc loc = start;
+    for (uint32_t i = start.byte; i < byte && i < file.text.size(); ++i) {
+        if (file.text[i] == '\n') {
+            ++loc.line;
+            loc.column = 1;
+        } else {
+            ++loc.column;
+        }
+    }
+    loc.byte = byte;
+    return loc;
+}
+
+}  // namespace
 
 const ast::Node* Evaluator::macro_named(const std::string& name) {
     Value* v = symbols.find(name);
@@ -15,11 +35,58 @@ const ast::Node* Evaluator::macro_named(const std::string& name) {
 }
 
 const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
-    if (auto it = macro_cache_.find(&macro); it != macro_cache_.end()) return *it->second;
+    const auto it = macro_cache_.find(&macro);
+    if (it != macro_cache_.end() && it->second) return *it->second;
     const SourceFile& file = *macro.loc.file;
-    trees_.push_back(parser::parse_fragment(file, macro.more().raw_begin, macro.more().raw_end, macro.more().raw_loc));
-    macro_cache_[&macro] = trees_.back().get();
+    const ast::NodeExtra& m = macro.more();
+    if (it == macro_cache_.end()) {
+        try {
+            trees_.push_back(parser::parse_fragment(file, m.raw_begin, m.raw_end, m.raw_loc));
+            macro_cache_[&macro] = trees_.back().get();
+            return *trees_.back();
+        } catch (const LumenError&) {
+            macro_cache_[&macro] = nullptr;  // no tree as written
+        }
+    }
+    if (const ast::Node* body = parse_decided_macro_body(macro)) return *body;
+    // Nothing decided helps: report the body's own syntax error.
+    trees_.push_back(parser::parse_fragment(file, m.raw_begin, m.raw_end, m.raw_loc));
     return *trees_.back();
+}
+
+// A body with no tree as written, parsed with the conditions it can decide now decided
+// (interp/conditional_text.hpp): a condition counts only if it reads no variable the body
+// assigns and calls no macro, so deciding it at the call gives what running it would.
+// One tree per outcome, kept for later calls.
+const ast::Node* Evaluator::parse_decided_macro_body(const ast::Node& macro) {
+    const SourceFile& file = *macro.loc.file;
+    const ast::NodeExtra& m = macro.more();
+    const ConditionalScan scan = scan_conditionals(file.text, m.raw_begin, m.raw_end);
+    const auto decide = [&](uint32_t begin, uint32_t end) -> std::optional<bool> {
+        const std::string_view condition(file.text.data() + begin, end - begin);
+        for (const std::string& name : condition_identifiers(condition))
+            if (scan.assigned.count(name) || macro_named(name)) return std::nullopt;
+        try {
+            const ast::NodePtr expr = parser::parse_expression(
+                file, begin, end, location_in(file, m.raw_loc, begin));
+            return eval_condition(*expr);
+        } catch (const LumenError&) {
+            return std::nullopt;
+        }
+    };
+    std::optional<std::string> text = blank_decided_conditionals(file.text, scan, decide);
+    if (!text) return nullptr;
+    std::string key = text->substr(m.raw_begin, m.raw_end - m.raw_begin);
+    const auto found = decided_macro_bodies_.find({&macro, key});
+    if (found != decided_macro_bodies_.end()) return found->second;
+    const SourceFile* decided = sources_.add(file.name, std::move(*text));
+    try {
+        trees_.push_back(parser::parse_fragment(*decided, m.raw_begin, m.raw_end, m.raw_loc));
+    } catch (const LumenError&) {
+        return nullptr;
+    }
+    decided_macro_bodies_[{&macro, std::move(key)}] = trees_.back().get();
+    return trees_.back().get();
 }
 
 void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::vector<Item>& out) {
@@ -45,7 +112,6 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
         throw LumenError(call.loc, "macro '" + macro.text + "' nested more than " +
                                        std::to_string(options_.max_macro_depth) + " calls deep");
     budget.step(call.loc);
-    const ast::Node& body = parse_macro_body(macro);
 
     ScopedSet depth(macro_depth_, macro_depth_ + 1);
     ScopedSet inside(breakable_, 1);  // #break ends the macro
@@ -53,6 +119,8 @@ void Evaluator::call_macro(const ast::Node& macro, const ast::Node& call, std::v
     {
         FrameGuard frame(symbols);
         for (size_t i = 0; i < given; ++i) symbols.local(params[i], std::move(args[i]));
+        // Parsed in the new frame: a body may need its conditions decided (parse_decided_macro_body).
+        const ast::Node& body = parse_macro_body(macro);
         run_items(body.children, out);
         for (const Reference& r : refs) {
             const std::string& p = params[r.param];

@@ -42,12 +42,25 @@ ast::NodePtr parse_file(const SourceFile& file) {
     return run<rules::file>(in, file);
 }
 
-ast::NodePtr parse_fragment(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start) {
+namespace {
+
+template <typename Rule>
+ast::NodePtr run_range(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start) {
     if (end > file.text.size() || begin > end)
         throw LumenError(start, "macro body outside its file");
     Input in(file.text.data() + begin, file.text.data() + end, file.name.c_str(), begin,
              start.line, start.column);
-    return run<rules::fragment>(in, file);
+    return run<Rule>(in, file);
+}
+
+}  // namespace
+
+ast::NodePtr parse_fragment(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start) {
+    return run_range<rules::fragment>(file, begin, end, start);
+}
+
+ast::NodePtr parse_expression(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start) {
+    return run_range<rules::single_expression>(file, begin, end, start);
 }
 
 ast::NodePtr parse_expression(const SourceFile& file) {

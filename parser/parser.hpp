@@ -20,6 +20,9 @@ ast::NodePtr parse_fragment(const SourceFile& file, uint32_t begin, uint32_t end
 
 // Parses a single expression from a string (command-line Declare=, tests). Throws LumenError.
 ast::NodePtr parse_expression(const SourceFile& file);
+// Parses bytes [begin, end) of file->text (whose location is `start`) as a single expression:
+// a directive's condition read out of a macro body. Throws LumenError.
+ast::NodePtr parse_expression(const SourceFile& file, uint32_t begin, uint32_t end, SourceLoc start);
 
 constexpr int kMaxNesting = 400;
 
