@@ -88,9 +88,14 @@ void render_frame(const Options& o, const Frame& frame, const scene::Scene& scen
     if (o.verbose && options.indirect) std::fprintf(stderr, "%s\n", radiosity.summary().c_str());
     if (encoder) encoder->write(frame.output);
     const std::string photons =
-        stats.photons_shot ? std::to_string(stats.photons_shot) + " photons shot (" +
-                                 std::to_string(stats.photons_stored) + " stored), "
-                           : "";
+        stats.photons_shot
+            ? std::to_string(stats.photons_shot) + " photons shot (" +
+                  std::to_string(stats.photons_stored) + " stored" +
+                  (stats.media_photons_stored
+                       ? ", " + std::to_string(stats.media_photons_stored) + " in media"
+                       : "") +
+                  "), "
+            : "";
     std::fprintf(stderr, "lumen: %s%s: parsed in %s, rendered %dx%d in %s, %llu rays, %s%s\n",
                  o.input.c_str(), frame.number ? (" frame " + std::to_string(frame.number)).c_str() : "",
                  format_duration(parse_seconds).c_str(), image.width, image.height,

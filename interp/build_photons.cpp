@@ -41,7 +41,7 @@ scene::PhotonSettings build_global_photons(ItemCursor& cur, std::vector<scene::U
             if (cur.next_is_float()) p.media_factor = cur.expect_float(w);
             if (p.media_steps < 0) cur.fail(item.loc, "photons media steps must not be negative");
             if (!(p.media_factor > 0)) cur.fail(item.loc, "photons media factor must be above 0");
-            if (p.media_steps > 0) unsupported.push_back({"photons media", item.loc});
+            if (p.media_steps > 0) p.media_loc = item.loc;
         } else if (w == "jitter") {
             p.jitter = cur.expect_float(w);
         } else if (w == "max_trace_level") {
@@ -73,6 +73,9 @@ scene::PhotonSettings build_global_photons(ItemCursor& cur, std::vector<scene::U
             cur.fail_unexpected(item, keywords);
         }
     }
+    // lumen's photon files hold the surface map only.
+    if (p.media_steps > 0 && (!p.save_file.empty() || !p.load_file.empty()))
+        unsupported.push_back({"photons media with save_file or load_file", p.media_loc});
     return p;
 }
 

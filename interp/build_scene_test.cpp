@@ -38,12 +38,15 @@ TEST_F(BuildScene, RadiosityAndPhotons) {
     ASSERT_TRUE(s.globals.photons.has_value());
     EXPECT_EQ(s.globals.photons->count, 1000);
     EXPECT_TRUE(s.unsupported.empty());
-    // Media photons are not rendered yet: listed where they are written. Photon files are
-    // kept with the place they are named at.
+    EXPECT_EQ(run("global_settings { photons { spacing 0.1 media 100, 2 } }").globals.photons->media_steps,
+              100);
+    // lumen's photon files hold no media photons: listed where media is written. Photon files
+    // are kept with the place they are named at.
     const scene::Scene m = run("global_settings { photons { spacing 0.1 media 100, 2 "
                                "save_file \"p.ph\" } }");
     ASSERT_EQ(m.unsupported.size(), 1u);
-    EXPECT_EQ(m.unsupported[0].feature, "photons media");
+    EXPECT_EQ(m.unsupported[0].feature, "photons media with save_file or load_file");
+    EXPECT_EQ(m.unsupported[0].loc.column, 41u);  // at `media`
     EXPECT_EQ(m.globals.photons->save_file, "p.ph");
     EXPECT_EQ(m.globals.photons->file_loc.column, 54u);
 }

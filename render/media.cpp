@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include <glm/geometric.hpp>
@@ -185,6 +186,7 @@ private:
             scattering += density * m->scattering;
         }
         if (!lit_ || scattering == glm::dvec3(0)) return c;
+        if (env_->media_photons) c.emitted += scattering * photon_light(p);
         for (int i = 0; i < n_lights_; ++i) {
             if (s < ranges_[i].start || s > ranges_[i].end) continue;
             const LightSource& l = *lights_[i];
@@ -192,8 +194,12 @@ private:
             if (!illuminate(l, p, ls)) continue;
             const std::optional<double> reach = projection_reach(l, p, ls.dir, ls.distance);
             if (!reach) continue;
-            glm::dvec3 filter =
-                shadow_filter(*env_->geometry, p, ls.dir, *reach, *interiors_, state_->counters);
+            // As on surfaces, a photon target that refracts this light shadows it black where
+            // photons light the scene (POV-Ray: its photons take the place of the light).
+            const scene::LightPhotons* refracted =
+                env_->photon_map && l.light ? &l.light->photons : nullptr;
+            glm::dvec3 filter = shadow_filter(*env_->geometry, p, ls.dir, *reach, *interiors_,
+                                              state_->counters, nullptr, refracted);
             if (filter != glm::dvec3(0) && atmosphere_dims(l, *env_))
                 filter *= media_transmittance(*env_->atmosphere, Ray{p, ls.dir}, ls.distance);
             if (filter == glm::dvec3(0)) continue;
@@ -204,6 +210,23 @@ private:
             c.emitted += k * scattering * ls.colour * filter;
         }
         return c;
+    }
+
+    // The media photons around p, each scattered towards the eye by the media's mean phase
+    // function, over the sphere that holds them (POV-Ray's volume estimate, before σ_s).
+    glm::dvec3 photon_light(const glm::dvec3& p) const {
+        thread_local GatheredPhotons gathered;
+        env_->media_photons->gather_adaptive(p, glm::dvec3(0), env_->media_gather, gathered);
+        if (gathered.count() == 0 || !(gathered.radius_sq > 0)) return glm::dvec3(0);
+        glm::dvec3 sum(0);
+        for (const Photon* ph : gathered.photons) {
+            const double alpha = glm::dot(ph->direction(), ray_.dir);
+            double k = 0;
+            for (const scene::Media* m : media_) k += phase(*m, alpha);
+            sum += k / double(media_.size()) * ph->colour();
+        }
+        const double r = std::sqrt(gathered.radius_sq);
+        return sum * (3 / (4 * std::numbers::pi * r * r * r));
     }
 
     struct Sample {

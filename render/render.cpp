@@ -142,7 +142,11 @@ Image render(const RenderFrame& frame, const RenderOptions& options, RenderStats
     if (failure) std::rethrow_exception(failure);
 
     total.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if (photons) total.photons_shot = photons->shot, total.photons_stored = photons->surface.size();
+    if (photons) {
+        total.photons_shot = photons->shot;
+        total.photons_stored = photons->surface.size();
+        total.media_photons_stored = photons->media.size();
+    }
     if (stats) *stats = total;
     return image;
 }

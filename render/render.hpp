@@ -43,6 +43,7 @@ struct Image {
 struct RenderStats {
     uint64_t primary_rays = 0, total_rays = 0, shadow_rays = 0;
     uint64_t photons_shot = 0, photons_stored = 0;  // the photon pass (POV's statistics)
+    uint64_t media_photons_stored = 0;
     double seconds = 0;
 };
 

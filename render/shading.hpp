@@ -47,6 +47,9 @@ struct LightingEnv {
     int quality = 9;
     // Set when a surface photon map exists: refracting photon targets then shadow black.
     bool photon_map = false;
+    // Media photons (null: none), gathered at every sample of lit media.
+    const PhotonMap* media_photons = nullptr;
+    GatherSettings media_gather;
 };
 
 // POV's metallic factor per channel: 1 + m·(1 − Fm)·(rgb − 1), with the Fresnel-like Fm of the

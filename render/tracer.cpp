@@ -104,6 +104,10 @@ void Tracer::init(const std::vector<LightSource>& lights) {
                        options.quality >= 9;
     env_.quality = options.quality;
     env_.photon_map = options.photons && !options.photons->surface.empty();
+    if (options.photons && !options.photons->media.empty()) {
+        env_.media_photons = &options.photons->media;
+        env_.media_gather = options.photons->media_gather;
+    }
     max_level_ = std::clamp(scene.globals.max_trace_level, 1, 256);
     adc_bailout_ = scene.globals.adc_bailout;
     legacy_opacity_ = scene.language_version < 3.7;

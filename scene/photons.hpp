@@ -26,7 +26,7 @@ struct PhotonSettings {
     // Gather radius and its multiplier for surfaces, then media; radius <= 0: automatic.
     double radius = 0, radius_mult = 1, media_radius = 0, media_radius_mult = 1;
     std::string save_file, load_file;  // render/photons/photon_file.hpp
-    SourceLoc loc, file_loc;           // the block; the save_file or load_file keyword
+    SourceLoc loc, file_loc, media_loc;  // the block; save_file or load_file; media
 };
 
 struct ObjectPhotons {

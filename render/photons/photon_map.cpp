@@ -181,7 +181,7 @@ void PhotonMap::gather_adaptive(const glm::dvec3& p, const glm::dvec3& normal,
         std::swap(out, wider);
 }
 
-double PhotonMap::choose_radius(int gather_max, double multiplier) const {
+double PhotonMap::choose_radius(int gather_max, double multiplier, bool volume) const {
     if (photons_.empty() || gather_max <= 0) return 0;
     const int samples = int(std::clamp<size_t>(photons_.size() / 20, 100, 1000));
     std::minstd_rand rng(1);
@@ -191,23 +191,28 @@ double PhotonMap::choose_radius(int gather_max, double multiplier) const {
     auto at = [](const Photon& ph) {
         return glm::dvec3(ph.position[0], ph.position[1], ph.position[2]);
     };
+    const auto density = [volume](const GatheredPhotons& g) {
+        return volume ? 3 * g.count() / (4 * kPi * g.radius_sq * std::sqrt(g.radius_sq))
+                      : g.count() / (kPi * g.radius_sq);
+    };
     GatheredPhotons g;
     double mean = 0;
     for (int i = 0; i < samples; ++i) {
         gather(at(pick()), glm::dvec3(0), 1e7, gather_max, g);
-        mean += g.count() / (kPi * g.radius_sq);
+        mean += density(g);
     }
     mean /= samples;
     if (!(mean > 0)) return 0;
-    double radius = std::sqrt(gather_max / (kPi * mean));
+    double radius = volume ? std::pow(3 * gather_max / (4 * kPi * mean), 0.3333)
+                           : std::sqrt(gather_max / (kPi * mean));
     int typical = 0;
     for (int i = 0; i < samples; ++i) {
         gather(at(pick()), glm::dvec3(0), radius, gather_max, g);
-        const double density = g.count() / (kPi * g.radius_sq);
-        if (density > 0.05 * mean && density < 0.7 * mean) ++typical;
+        const double d = density(g);
+        if (d > 0.05 * mean && d < 0.7 * mean) ++typical;
     }
     radius *= (1 + 20.0 * typical / samples) * multiplier;
-    return radius;
+    return volume ? 2 * radius : radius;
 }
 
 }  // namespace lumen::render

@@ -55,8 +55,9 @@ public:
     // A damaged order gathers wrongly but safely (the tree is implicit in the index ranges).
     void assign_built(std::vector<Photon> photons) { photons_ = std::move(photons); }
     // POV's automatic start radius from the photon density around sample photons (`radius`
-    // not given), times `multiplier`; deterministic.
-    double choose_radius(int gather_max, double multiplier) const;
+    // not given), times `multiplier`; deterministic. `volume`: a media map, whose density is
+    // per volume (n over 4/3 πr³) and whose radius POV-Ray doubles.
+    double choose_radius(int gather_max, double multiplier, bool volume = false) const;
 
     // The up to `max` nearest photons within `radius` of p. With a normal (non-zero), distances
     // are flattened towards the surface: |v|²(1 + 16|n·v|), POV's ellipsoid.

@@ -16,6 +16,7 @@
 #include "base/diagnostics.hpp"
 #include "base/stop_request.hpp"
 #include "render/frame.hpp"
+#include "render/media.hpp"
 #include "render/node.hpp"
 #include "scene/object_extents.hpp"
 #include "render/normal_frame.hpp"
@@ -122,17 +123,18 @@ void set_rings(Combo& c, double spacing) {
 
 // The photons one ring left, whether any reached the target, and how many were shot.
 struct RingResult {
-    std::vector<Photon> photons;
+    std::vector<Photon> photons, media_photons;
     uint64_t shot = 0;
     bool hit = false;
 };
 
 class PhotonTracer {
 public:
-    PhotonTracer(const Geometry& geometry, const Combo& combo, int max_level, double adc,
-                 std::vector<Photon>& out)
+    PhotonTracer(const Geometry& geometry, const Combo& combo, const scene::PhotonSettings& settings,
+                 int max_level, double adc, std::mt19937_64& rng, RingResult& out)
         : geometry_(geometry), combo_(combo), light_(*combo.light),
-          flags_(combo.light->light->photons), max_level_(max_level), adc_(adc), out_(out) {}
+          flags_(combo.light->light->photons), settings_(settings), max_level_(max_level),
+          adc_(adc), rng_(&rng), out_(out.photons), media_out_(out.media_photons) {}
 
     // Traces a photon from the light; true when its first hit (past pass_through objects) is
     // the target.
@@ -143,6 +145,8 @@ public:
             if (level > max_level_) return false;
             Hit hit;
             if (!find_hit(ray, hit)) return false;
+            if (level > 1 && !passed && settings_.media_steps > 0)
+                colour = through_media(ray, hit.t, travelled, colour, interiors);
             travelled += hit.t;
             if (hit.interior && interiors.find(hit.interior_id) >= 0)
                 colour *= interior_fade(*hit.interior, hit.t, true);
@@ -180,6 +184,49 @@ private:
             t_min = hit.t;
         }
         return false;
+    }
+
+    // POV-Ray's media photons: along a segment through scattering media (each of its lead
+    // media's intervals), photons about as far apart as neighbouring photon paths are there
+    // (times the media factor, at most `media` of them per interval), each carrying the light
+    // that entered the segment over its share of the path, undimmed; the photon leaves the
+    // segment dimmed by the media's extinction.
+    glm::dvec3 through_media(const Ray& ray, double length, double travelled,
+                             const glm::dvec3& colour, const InteriorList& interiors) const {
+        if (interiors.in_solid()) return colour;  // POV-Ray: no media inside a solid object
+        thread_local std::vector<const scene::Media*> media;
+        media_in(interiors, media);
+        if (media.empty()) return colour;
+        const scene::Media* lead = media.front();
+        bool scatters = false;
+        for (const scene::Media* m : media) {
+            if (m->intervals > lead->intervals) lead = m;
+            scatters = scatters || (m->collect && m->scattering != glm::dvec3(0));
+        }
+        const int intervals = std::clamp(lead->intervals, 1, 1000);
+        const double ds = length / intervals;
+        std::uniform_real_distribution<double> uniform(0.0, 1.0);
+        // Path length from the light (1 for parallel light, whose spread is a length).
+        const auto path = [&](double s) { return combo_.parallel ? 1.0 : travelled + s; };
+        for (int i = 0; scatters && i < intervals; ++i) {
+            const double s0 = i * ds;
+            double factor = settings_.media_factor;
+            const double step = combo_.spread * path(s0) * factor;
+            if (!(step > 0) || !(ds > 0)) break;
+            double n = std::floor(ds / step);
+            if (n > settings_.media_steps) {
+                n = settings_.media_steps;
+                factor = ds / (combo_.spread * path(s0) * n);
+            }
+            for (int j = 0; j < int(n); ++j) {
+                const double f = (j + 0.5 + settings_.jitter * (uniform(*rng_) - 0.5)) / n;
+                const double s = s0 + f * ds, g = path(s);
+                const double flux = factor * combo_.spread * g * combo_.spread * combo_.spread *
+                                    g * g * light_fade(light_, travelled + s);
+                media_out_.push_back(make_photon(ray.origin + s * ray.dir, colour * flux, -ray.dir));
+            }
+        }
+        return colour * media_transmittance(media, ray, length);
     }
 
     void deposit(const glm::dvec3& p, const glm::dvec3& colour, double travelled,
@@ -273,9 +320,12 @@ private:
     const Combo& combo_;
     const LightSource& light_;
     const scene::LightPhotons& flags_;
+    const scene::PhotonSettings& settings_;
     int max_level_;
     double adc_;
+    std::mt19937_64* rng_;  // the ring's: media photon jitter
     std::vector<Photon>& out_;
+    std::vector<Photon>& media_out_;
 };
 
 uint64_t ring_seed(size_t combo, size_t ring) {
@@ -290,11 +340,13 @@ uint64_t ring_seed(size_t combo, size_t ring) {
 
 // One ring of photons at angle theta from the axis (POV-Ray's loop over phi).
 void shoot_ring(const Geometry& geometry, const Combo& c, size_t combo_index, size_t ring,
-                double theta, double jitter, int max_level, double adc, RingResult& out) {
+                double theta, const scene::PhotonSettings& settings, int max_level, double adc,
+                RingResult& out) {
     std::mt19937_64 rng(ring_seed(combo_index, ring));
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     const LightSource& l = *c.light;
-    const PhotonTracer tracer(geometry, c, max_level, adc, out.photons);
+    const double jitter = settings.jitter;
+    const PhotonTracer tracer(geometry, c, settings, max_level, adc, rng, out);
     const double d_theta = c.d_theta;
     const double d_phi = theta < 1e-10 ? 2 * kPi : c.parallel ? d_theta / theta : d_theta / std::sin(theta);
     const double phi_min = -kPi + d_phi * uniform(rng) * 0.5;
@@ -341,6 +393,11 @@ void set_gather(PhotonPass& pass, const scene::PhotonSettings& settings) {
     pass.gather.radius = settings.radius > 0 ? settings.radius * settings.radius_mult
                                              : pass.surface.choose_radius(settings.gather_max,
                                                                           settings.radius_mult);
+    pass.media_gather = pass.gather;
+    pass.media_gather.radius =
+        settings.media_radius > 0
+            ? settings.media_radius * settings.media_radius_mult
+            : pass.media.choose_radius(settings.gather_max, settings.media_radius_mult, true);
 }
 
 }  // namespace
@@ -422,7 +479,7 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
                 throw_if_stop_requested();
                 const Ring& r = rings[i];
                 shoot_ring(geometry, combos[r.combo], r.combo, i - first_ring[r.combo], r.theta,
-                           settings.jitter, max_level, adc, results[i]);
+                           settings, max_level, adc, results[i]);
             }
         } catch (...) {
             std::lock_guard lock(failure_mutex);
@@ -449,6 +506,7 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
             RingResult& r = results[k];
             pass->shot += r.shot;
             pass->surface.append(r.photons);
+            pass->media.append(r.media_photons);
             if (hit_before && !r.hit && rings[k].theta > settings.autostop * combos[i].theta_max)
                 break;
             hit_before = hit_before || r.hit;
@@ -456,6 +514,7 @@ std::unique_ptr<PhotonPass> shoot_photons(const RenderFrame& frame, int threads)
     }
     results.clear();
     pass->surface.build();
+    pass->media.build();
     set_gather(*pass, settings);
     if (!settings.save_file.empty()) save_photons(*pass, settings.save_file, settings.file_loc);
     return pass;

@@ -14,6 +14,8 @@ class RenderFrame;
 struct PhotonPass {
     PhotonMap surface;       // photons on surfaces, as a kd-tree
     GatherSettings gather;   // how the tracer gathers them (radius chosen after shooting)
+    PhotonMap media;         // photons left along paths through scattering media
+    GatherSettings media_gather;
     double spacing = 0;      // the surface spacing used (given, or estimated from count)
     uint64_t shot = 0;       // photons shot (POV-Ray's statistic)
 };
