@@ -46,8 +46,21 @@ glm::dvec3 Photon::colour() const {
 }
 
 glm::dvec3 Photon::direction() const {
-    const double t = theta * kPi / 127, p = phi * kPi / 127;
-    return {std::cos(t) * std::cos(p), std::sin(t), std::cos(t) * std::sin(p)};
+    // The cosine and sine of each of the 256 angles a byte holds, computed once (a media
+    // gather decodes a hundred directions per sample).
+    struct Angles {
+        double cos[256], sin[256];
+        Angles() {
+            for (int i = 0; i < 256; ++i) {
+                const double a = (i - 128) * kPi / 127;
+                cos[i] = std::cos(a);
+                sin[i] = std::sin(a);
+            }
+        }
+    };
+    static const Angles angles;
+    const int t = theta + 128, p = phi + 128;
+    return {angles.cos[t] * angles.cos[p], angles.sin[t], angles.cos[t] * angles.sin[p]};
 }
 
 void PhotonMap::build() {
