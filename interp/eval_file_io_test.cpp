@@ -55,6 +55,28 @@ TEST_F(FileIoTest, WritesPovRayFormats) {
                           22));
 }
 
+TEST_F(FileIoTest, DirectivesAmongWriteValuesWriteWhatTheyLeave) {
+    run("#fopen F \"o.txt\" write\n"
+        "#write(F, \"a\", #for (I, 1, 3) \",\", I #end, #if (0) \"no\" #else \"x\" #end)\n"
+        "#fclose F\n");
+    EXPECT_EQ(contents("o.txt"), "a,1,2,3x");
+}
+
+// shapes.inc's HF_Square with a file name writes its mesh2 with #write arguments that run
+// through #while loops and #if branches: the bytes povray 3.7 wrote for the same call.
+TEST_F(FileIoTest, ShapesIncWritesTheMeshPovRayWrites) {
+    run("#include \"shapes.inc\"\n"
+        "#declare Fn = function(x, y, z) { 0.5 + 0.25 * x }\n"
+        "HF_Square(Fn, 1, 1, <3, 2>, 1, \"sq.inc\", <0, 0, 0>, <1, 1, 1>)\n");
+    EXPECT_EQ(contents("sq.inc"),
+              "mesh2 {\nvertex_vectors {\n6,\n<0,0.5,0> ,\n<0,0.5,1> ,\n<0.5,0.625,0> ,\n"
+              "<0.5,0.625,1> ,\n<1,0.75,0> ,\n<1,0.75,1> \n}\nnormal_vectors {\n6,\n"
+              "<-0.242536,0.970143,0> ,\n<-0.242536,0.970143,0> ,\n<-0.242536,0.970143,0> ,\n"
+              "<-0.242536,0.970143,0> ,\n<-0.242536,0.970143,0> ,\n<-0.242536,0.970143,0> \n}\n"
+              "uv_vectors {\n6,\n<0,0> ,\n<0,1> ,\n<0.5,0> ,\n<0.5,1> ,\n<1,0> ,\n<1,1> \n}\n"
+              "face_indices {\n4,\n<0,2,3> ,\n<0,3,1> ,\n<2,4,5> ,\n<2,5,3> \n}\nuv_mapping\n}");
+}
+
 TEST_F(FileIoTest, ReadsCommaSeparatedLiteralsAndClosesAtTheEnd) {
     std::ofstream("data.txt") << "\"hello\", 1.5, <1,2,3>, -4,\n<5,6>, 7 8 9, 10";
     run("#declare R = array[9];\n#fopen D \"data.txt\" read\n#declare N = 0;\n"

@@ -15,6 +15,7 @@
 
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
+#include "interp/literal_items.hpp"
 #include "interp/item_cursor.hpp"
 
 namespace lumen::interp {
@@ -309,6 +310,22 @@ void Evaluator::write_file(const ast::Node& n) {
             if (v.is<double>()) out += integer_bytes(*t, v.as<double>());
             else if (v.is<VecN>()) for (double x : v.as<VecN>().c) out += integer_bytes(*t, x);
             else type_error(v, "a float or vector");
+            continue;
+        }
+        if (c.kind >= ast::Kind::Body && c.kind != ast::Kind::Null) {
+            // A directive among the values (`#while ... V, #end`): what it leaves is written.
+            std::vector<Item> items;
+            if (run_item(c, items) == Flow::Break)
+                throw LumenError(c.loc, "#break among the values of a #write");
+            expand_literals(items);
+            for (const Item& it : items) {
+                if (it.kind == Item::Kind::Comma) continue;
+                if (it.kind != Item::Kind::Value)
+                    throw LumenError(it.loc, it.kind == Item::Kind::Keyword
+                                                 ? "unexpected '" + it.keyword + "' in #write"
+                                                 : std::string("unexpected item in #write"));
+                write_value(it.value, out);
+            }
             continue;
         }
         std::vector<Value> values;  // `"y" -2.5` is two items, as in macro arguments

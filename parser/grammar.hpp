@@ -577,9 +577,17 @@ struct open_mode : word {};
 struct fileio_args : seq<must<open_paren>, sep,
                          star<sor<padded<comma>, padded<keyword_item>, padded<plain_expression>>>,
                          must<close_paren>> {};
+// #write's values may also come from directives among them, as POV-Ray reads a token stream
+// (shapes.inc writes a mesh2 with `#write(F, "...", N, #while ... V, #end ")")`).
+struct write_args
+    : seq<must<open_paren>, sep,
+          star<sor<padded<comma>, padded<keyword_item>, seq<at<one<'#'>>, directive>,
+                   padded<plain_expression>>>,
+          must<close_paren>> {};
 struct fileio_directive
     : sor<seq<kw_fopen, sep, must<file_handle>, sep, must<plain_expression>, sep, must<open_mode>>,
-          seq<kw_fclose, sep, must<file_handle>>, seq<sor<kw_read, kw_write>, sep, fileio_args>> {};
+          seq<kw_fclose, sep, must<file_handle>>, seq<kw_read, sep, fileio_args>,
+          seq<kw_write, sep, write_args>> {};
 struct fileio : seq<fileio_directive, sep> {};
 
 // Words that end a directive body rather than start an item.
