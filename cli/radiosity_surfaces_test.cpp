@@ -117,6 +117,27 @@ TEST(RadiositySurfaces, CsgTheMesherDoesNotCutGetsIndirectLight) {
     EXPECT_GT(g, 0.6 / 4);
 }
 
+// The vertex gathers that land on unmeshed surfaces gather again there, through caches of
+// their worker's own: two passes over the same scene with two threads give the same light.
+TEST(RadiositySurfaces, GathersThroughUnmeshedSurfacesAreTheSameRunToRun) {
+    SourceManager sources;
+    std::string objects;
+    for (int i = 0; i < 5; ++i)
+        for (int k = 0; k < 5; ++k)
+            objects += "difference { sphere { <" + std::to_string(2 * i - 4) + ", 0.6, " +
+                       std::to_string(2 * k - 4) + ">, 0.7 } box { <-9, 0.9, -9>, <9, 2, 9> }\n"
+                       "  pigment { rgb 1 } finish { diffuse 0.65 } }\n";
+    scene::Scene s = in_the_sky(sources, "<0, 9, -9>", objects);
+    s.globals.radiosity->recursion_limit = 2;
+    const std::vector<glm::dvec3> ground = ring(3, 0, 40);
+    int hits = 0;
+    const double first = mean_incident(s, rad::DisplayMode::Preview, {0, 9, -9}, ground, hits);
+    for (int run = 0; run < 3; ++run)
+        EXPECT_EQ(mean_incident(s, rad::DisplayMode::Preview, {0, 9, -9}, ground, hits), first);
+    EXPECT_EQ(hits, 40);
+    EXPECT_GT(first, 0.1);
+}
+
 // POV-Ray 3.7 under #version 3.6: a surface's ambient is emission for radiosity (a plane of
 // ambient 0.2 under a sky of ambient 1 rendered 0.2 + 0.5 × sky); from 3.7 on it is not.
 TEST(RadiositySurfaces, AmbientIsEmissionOnlyBeforeVersion37) {

@@ -2,8 +2,9 @@
 # Usage: tools/tsan-check.sh LUMEN_TSAN_BINARY
 # Renders multithreaded (+WT2) scenes with a ThreadSanitizer build of lumen (`make tsan`
 # builds one) and fails if TSan reports anything: the examples with anti-aliasing, an
-# animation, the teapot (meshes traced through Embree), and cornell.pov with both radiosity
-# displays (the irradiance cache is shared by the render threads). Small sizes: TSan runs
+# animation, the teapot (meshes traced through Embree), cornell.pov with both radiosity
+# displays (the irradiance cache is shared by the render threads), radiosity through CSG and
+# media photons. Small sizes: TSan runs
 # 5-15x slower.
 set -uo pipefail
 lumen=$(realpath "${1:?usage: tools/tsan-check.sh LUMEN_TSAN_BINARY}")
@@ -33,4 +34,8 @@ check teapot /usr/share/povray-3.7/scenes/advanced/teapot/teapot.pov +W96 +H72 +
 cornell=/usr/share/povray-3.7/scenes/radiosity/cornell.pov
 check cornell-preview "$cornell" +W60 +H60 -A Radiosity_Display=preview
 check cornell-gather "$cornell" +W60 +H60 -A Radiosity_Display=gather
+# CSG the mesher does not cut: vertex gathers that gather again through their worker's caches.
+check radiosity-csg /usr/share/povray-3.7/scenes/radiosity/radiosity_37.pov +W48 +H36 -A
+# Media photons: shot on every thread, gathered by every media sample.
+check media-photons "$root/tests/photons/media_photons.pov" +W48 +H36 -A
 exit $status

@@ -49,6 +49,29 @@ glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, Threa
     return g;
 }
 
+void PointGather::with_worker_caches(size_t worker, const std::function<void()>& work) const {
+    if (!B_) {
+        work();
+        return;
+    }
+    const Caches* caches = nullptr;
+    {
+        std::lock_guard lock(workers_mutex_);
+        if (worker_caches_.size() <= worker) worker_caches_.resize(worker + 1);
+        if (!worker_caches_[worker]) worker_caches_[worker] = std::make_unique<Caches>(make_caches());
+        caches = worker_caches_[worker].get();
+    }
+    const Caches* outer = t_block_caches;
+    t_block_caches = caches;
+    try {
+        work();
+    } catch (...) {
+        t_block_caches = outer;
+        throw;
+    }
+    t_block_caches = outer;
+}
+
 glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int level) const {
     return incident_in(t_block_caches ? *t_block_caches : caches_, p, n, level);
 }
@@ -95,6 +118,10 @@ glm::dvec3 PointGather::incident_in(const Caches& caches, const glm::dvec3& p,
 size_t PointGather::cache_points() const {
     size_t n = block_records_;
     for (const auto& c : caches_) n += c->size();
+    std::lock_guard lock(workers_mutex_);
+    for (const auto& w : worker_caches_)
+        if (w)
+            for (const auto& c : *w) n += c->size();
     return n;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -35,6 +36,7 @@ public:
                 const PointGatherSettings& settings);
 
     glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const override;
+    void with_worker_caches(size_t worker, const std::function<void()>& work) const override;
 
     // Incident indirect light at surface point p on the side of unit normal n, for a gather
     // of `level` (1: a camera hit), through that level's cache. Needs B.
@@ -58,7 +60,9 @@ private:
     glm::dvec3 incident_in(const Caches& caches, const glm::dvec3& p, const glm::dvec3& n,
                            int level) const;
 
-    Caches caches_;  // shared: gathers outside render blocks (the receivers')
+    Caches caches_;  // shared: gathers outside render blocks and workers
+    mutable std::mutex workers_mutex_;
+    mutable std::vector<std::unique_ptr<Caches>> worker_caches_;  // the receivers' workers
     mutable std::atomic<size_t> block_records_{0};
     mutable std::atomic<uint64_t> gather_ns_{0};
 };

@@ -232,21 +232,27 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
     std::vector<char> buried(r.G.size(), 0);
     auto gather = [&](const std::vector<uint32_t>& unknowns) {
         buried.resize(r.G.size(), 0);
-        parallel_for(unknowns.size(), threads, [&](size_t begin, size_t end) {
-            for (size_t i = begin; i < end; ++i) {
-                const uint32_t u = unknowns[i], v = u / 2;
-                // From the true surface, about its normal: a gather from a curved shape's
-                // chord starts inside the shape, and one about the chord's normal sends rays
-                // into it.
-                glm::dvec3 origin = r.origin(v), n = r.normal(v);
-                onto_surface(geometry, r.object(v), origin, n, r.reach(v));
-                if (u % 2) n = -n;
-                const GatherResult g = gather_point(scene, mesh, geometry, B, origin, n, rays,
-                                                    side_seed(u), unmeshed);
-                r.G[u] = g.G;
-                r.known[u] = 1;
-                buried[u] = g.inside >= kBuried;
-            }
+        // Each worker with a fixed share and caches of its own: the gathers' values do not
+        // depend on which thread reached a surface first.
+        parallel_for_dealt(unknowns.size(), threads, [&](size_t worker, size_t begin, size_t end) {
+            const auto chunk = [&] {
+                for (size_t i = begin; i < end; ++i) {
+                    const uint32_t u = unknowns[i], v = u / 2;
+                    // From the true surface, about its normal: a gather from a curved shape's
+                    // chord starts inside the shape, and one about the chord's normal sends rays
+                    // into it.
+                    glm::dvec3 origin = r.origin(v), n = r.normal(v);
+                    onto_surface(geometry, r.object(v), origin, n, r.reach(v));
+                    if (u % 2) n = -n;
+                    const GatherResult g = gather_point(scene, mesh, geometry, B, origin, n, rays,
+                                                        side_seed(u), unmeshed);
+                    r.G[u] = g.G;
+                    r.known[u] = 1;
+                    buried[u] = g.inside >= kBuried;
+                }
+            };
+            if (unmeshed) unmeshed->with_worker_caches(worker, chunk);
+            else chunk();
         });
     };
     std::vector<uint32_t> todo;

@@ -34,6 +34,27 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 
+// Runs `work(worker)` on `workers` threads; the first exception stops the others' next chunk
+// (they poll `stop`) and is rethrown.
+void run_workers(size_t workers, const std::function<void(size_t, std::atomic<bool>&)>& work) {
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    std::atomic<bool> stop{false};
+    std::vector<std::thread> pool;
+    for (size_t w = 0; w < workers; ++w)
+        pool.emplace_back([&, w] {
+            try {
+                work(w, stop);
+            } catch (...) {
+                std::lock_guard lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+                stop = true;
+            }
+        });
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+}
+
 }  // namespace
 
 void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn) {
@@ -47,24 +68,29 @@ void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t
     // Chunks of up to 16 items, small enough that each worker takes several: one costly last
     // chunk of a short list (a subdivision level's few new vertices) would keep the others idle.
     const size_t chunk = std::clamp<size_t>(n / (8 * workers), 1, 16);
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-        try {
-            for (size_t b = next.fetch_add(chunk); b < n; b = next.fetch_add(chunk)) {
-                throw_if_stop_requested();
-                fn(b, std::min(n, b + chunk));
-            }
-        } catch (...) {
-            std::lock_guard lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
-            next = n;
+    run_workers(workers, [&](size_t, std::atomic<bool>& stop) {
+        for (size_t b = next.fetch_add(chunk); b < n && !stop; b = next.fetch_add(chunk)) {
+            throw_if_stop_requested();
+            fn(b, std::min(n, b + chunk));
         }
-    };
-    std::vector<std::thread> pool;
-    for (size_t i = 0; i < workers; ++i) pool.emplace_back(work);
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    });
+}
+
+void parallel_for_dealt(size_t n, int threads,
+                        const std::function<void(size_t, size_t, size_t)>& fn) {
+    const size_t workers = std::max<size_t>(1, size_t(std::max(threads, 1)));
+    throw_if_stop_requested();
+    if (workers <= 1 || n <= 1) {
+        if (n > 0) fn(0, 0, n);
+        return;
+    }
+    const size_t chunk = std::clamp<size_t>(n / (8 * workers), 1, 16);
+    run_workers(workers, [&](size_t w, std::atomic<bool>& stop) {
+        for (size_t b = w * chunk; b < n && !stop; b += workers * chunk) {
+            throw_if_stop_requested();
+            fn(w, b, std::min(n, b + chunk));
+        }
+    });
 }
 
 glm::dvec3 VertexFormFactors::gather(size_t u, const std::vector<glm::dvec3>& B) const {

@@ -31,6 +31,13 @@ public:
     // The light leaving `hit` back along the ray (direction `dir`) of a gather at `level`
     // (1: the gathers the camera's hits and the final gather make).
     virtual glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const = 0;
+    // Runs `work` with the caches of `worker` (kept from call to call) for the gathers
+    // `leaving` makes on this thread: with each worker given a fixed share of the work, what
+    // it computes does not depend on which thread reached a surface first.
+    virtual void with_worker_caches(size_t worker, const std::function<void()>& work) const {
+        (void)worker;
+        work();
+    }
 };
 
 // Sparse rows of vertex form factors: F[u][col] is the fraction of a cosine-weighted gather
@@ -138,5 +145,9 @@ bool needs_form_factors(const scene::Scene& scene, const RadiosityOptions& optio
 
 // Runs fn(begin, end) over [0, n) on up to `threads` threads (in chunks).
 void parallel_for(size_t n, int threads, const std::function<void(size_t, size_t)>& fn);
+// The same with a fixed share per worker (chunks dealt round robin): fn(worker, begin, end),
+// where the same chunks always reach the same worker for a given thread count.
+void parallel_for_dealt(size_t n, int threads,
+                        const std::function<void(size_t, size_t, size_t)>& fn);
 
 }  // namespace lumen::render::radiosity
