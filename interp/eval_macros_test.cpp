@@ -61,6 +61,9 @@ TEST_F(MacroTest, ConditionsTheBodyAssignsAreNotDecidedEarly) {
     // the body's own syntax error stands, at its place.
     EXPECT_EQ(error_of("#macro Bad()\n  #local W = 1;\n  #declare R = #if (W) 2 + #else 2 * #end 5;\n#end\nBad()\n"),
               "test.pov:3:29: error: expected expression after operator, found 'else'");
+    // Nor a condition that draws a random number: the stream would advance once, not per run.
+    EXPECT_EQ(error_of("#declare S = seed(1);\n#macro Bad()\n  #declare R = #if (rand(S) < 2) 2 + #else 2 * #end 5;\n#end\nBad()\n"),
+              "test.pov:3:39: error: expected expression after operator, found 'else'");
     // An error inside a decided body keeps its line and column.
     EXPECT_EQ(error_of("#macro Op(Add)\n  #declare R = #if (Add) 2 + #else 2 * #end\n    Nope;\n#end\nOp(1)\n"),
               "test.pov:3:5: error: undeclared identifier 'Nope'");

@@ -56,7 +56,8 @@ const ast::Node& Evaluator::parse_macro_body(const ast::Node& macro) {
 
 // A body with no tree as written, parsed with the conditions it can decide now decided
 // (interp/conditional_text.hpp): a condition counts only if it reads no variable the body
-// assigns and calls no macro, so deciding it at the call gives what running it would.
+// assigns and calls no macro and no rand() (whose stream advances each time it runs), so
+// deciding it at the call gives what running it would.
 // One tree per outcome, kept for later calls.
 const ast::Node* Evaluator::parse_decided_macro_body(const ast::Node& macro) {
     const SourceFile& file = *macro.loc.file;
@@ -65,7 +66,7 @@ const ast::Node* Evaluator::parse_decided_macro_body(const ast::Node& macro) {
     const auto decide = [&](uint32_t begin, uint32_t end) -> std::optional<bool> {
         const std::string_view condition(file.text.data() + begin, end - begin);
         for (const std::string& name : condition_identifiers(condition))
-            if (scan.assigned.count(name) || macro_named(name)) return std::nullopt;
+            if (scan.assigned.count(name) || macro_named(name) || name == "rand") return std::nullopt;
         try {
             const ast::NodePtr expr = parser::parse_expression(
                 file, begin, end, location_in(file, m.raw_loc, begin));
