@@ -83,10 +83,9 @@ public:
                const LightingEnv* env, const InteriorList* interiors, ThreadState* state)
         : media_(media), ray_(ray), lit_(lit), env_(env), interiors_(interiors), state_(state) {
         // A segment of several media takes its sampling from the first with the most intervals.
-        lead_ = media.front();
+        lead_ = &lead_media(media);
         threshold_ = lead_->aa_threshold;
         for (const scene::Media* m : media) {
-            if (m->intervals > lead_->intervals) lead_ = m;
             threshold_ = std::min(threshold_, m->aa_threshold);
             constant_ = constant_ && m->constant();
         }
@@ -203,10 +202,7 @@ private:
             if (filter != glm::dvec3(0) && atmosphere_dims(l, *env_))
                 filter *= media_transmittance(*env_->atmosphere, Ray{p, ls.dir}, ls.distance);
             if (filter == glm::dvec3(0)) continue;
-            const double alpha = glm::dot(ls.dir, ray_.dir);
-            double k = 0;
-            for (const scene::Media* m : media_) k += phase(*m, alpha);
-            k /= double(media_.size());
+            const double k = mean_phase(media_, glm::dot(ls.dir, ray_.dir));
             c.emitted += k * scattering * ls.colour * filter;
         }
         return c;
@@ -219,12 +215,8 @@ private:
         env_->media_photons->gather_adaptive(p, glm::dvec3(0), env_->media_gather, gathered);
         if (gathered.count() == 0 || !(gathered.radius_sq > 0)) return glm::dvec3(0);
         glm::dvec3 sum(0);
-        for (const Photon* ph : gathered.photons) {
-            const double alpha = glm::dot(ph->direction(), ray_.dir);
-            double k = 0;
-            for (const scene::Media* m : media_) k += phase(*m, alpha);
-            sum += k / double(media_.size()) * ph->colour();
-        }
+        for (const Photon* ph : gathered.photons)
+            sum += mean_phase(media_, glm::dot(ph->direction(), ray_.dir)) * ph->colour();
         const double r = std::sqrt(gathered.radius_sq);
         return sum * (3 / (4 * std::numbers::pi * r * r * r));
     }
@@ -333,6 +325,19 @@ glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, co
     const glm::dvec3 t = in.run(std::min(depth, kMediaEscapeDepth)).transmittance;
     return glm::dvec3(std::isfinite(t.x) ? t.x : 0, std::isfinite(t.y) ? t.y : 0,
                       std::isfinite(t.z) ? t.z : 0);
+}
+
+const scene::Media& lead_media(const std::vector<const scene::Media*>& media) {
+    const scene::Media* lead = media.front();
+    for (const scene::Media* m : media)
+        if (m->intervals > lead->intervals) lead = m;
+    return *lead;
+}
+
+double mean_phase(const std::vector<const scene::Media*>& media, double alpha) {
+    double k = 0;
+    for (const scene::Media* m : media) k += phase(*m, alpha);
+    return k / double(media.size());
 }
 
 double phase(const scene::Media& m, double alpha) {

@@ -46,5 +46,10 @@ glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, co
 // POV-Ray's phase functions (no 1/4 pi): the share of light arriving along `to_light` that
 // scatters along `view`, alpha = to_light . view.
 double phase(const scene::Media& m, double alpha);
+// The phase of several media in one segment: their mean (POV-Ray).
+double mean_phase(const std::vector<const scene::Media*>& media, double alpha);
+
+// The media a segment of several takes its sampling from: the first with the most intervals.
+const scene::Media& lead_media(const std::vector<const scene::Media*>& media);
 
 }  // namespace lumen::render

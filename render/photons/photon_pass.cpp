@@ -197,13 +197,10 @@ private:
         thread_local std::vector<const scene::Media*> media;
         media_in(interiors, media);
         if (media.empty()) return colour;
-        const scene::Media* lead = media.front();
         bool scatters = false;
-        for (const scene::Media* m : media) {
-            if (m->intervals > lead->intervals) lead = m;
+        for (const scene::Media* m : media)
             scatters = scatters || (m->collect && m->scattering != glm::dvec3(0));
-        }
-        const int intervals = std::clamp(lead->intervals, 1, 1000);
+        const int intervals = std::clamp(lead_media(media).intervals, 1, 1000);
         const double ds = length / intervals;
         std::uniform_real_distribution<double> uniform(0.0, 1.0);
         // Path length from the light (1 for parallel light, whose spread is a length).
