@@ -2,7 +2,7 @@
 // the build put it (LUMEN_OIIO_MODULE, for test programs built elsewhere).
 #include "image/oiio_module.hpp"
 
-#include <dlfcn.h>
+#include "base/shared_library.hpp"
 
 #include <filesystem>
 #include <mutex>
@@ -34,9 +34,8 @@ void* module_handle(std::string& why) {
 #endif
         for (const std::string& path : candidates) {
             if (!std::filesystem::exists(path)) continue;
-            handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+            handle = base::open_library(path, error);
             if (handle) return;
-            error = dlerror();
         }
         if (error.empty()) error = std::string(kModuleName) + " was not found beside lumen";
     });
@@ -49,7 +48,7 @@ void* module_handle(std::string& why) {
 void* oiio_module_function(const char* symbol, std::string& why) {
     void* handle = module_handle(why);
     if (!handle) return nullptr;
-    void* f = dlsym(handle, symbol);
+    void* f = base::library_symbol(handle, symbol, why);
     if (!f) why = std::string(kModuleName) + " has no " + symbol;
     return f;
 }

@@ -10,22 +10,53 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_TRUETYPE_TABLES_H
 #include FT_TRUETYPE_TAGS_H
 
+#include "base/shared_library.hpp"
+
 namespace lumen::interp {
 
 namespace {
 
+// FreeType's functions lumen calls, from the library opened at the first text object
+// (base/shared_library.hpp): scenes without text do not load FreeType and its codecs.
+#define LUMEN_FREETYPE_FUNCTIONS(X)                                                         \
+    X(FT_Init_FreeType) X(FT_Done_FreeType) X(FT_New_Face) X(FT_Done_Face)                  \
+    X(FT_Get_Sfnt_Table) X(FT_Load_Sfnt_Table) X(FT_Get_CMap_Format) X(FT_Set_Charmap)      \
+    X(FT_Get_Char_Index) X(FT_Load_Glyph) X(FT_Get_Kerning)
+
+struct FreeType {
+    LUMEN_FREETYPE_FUNCTIONS(LUMEN_LIBRARY_MEMBER)
+};
+
+// The functions; throws where the library cannot be opened or lacks one of them.
+const FreeType& freetype() {
+    static std::string why;
+    static const FreeType* api = []() -> const FreeType* {
+        static FreeType t;
+        void* library = base::open_library(LUMEN_FREETYPE_LIBRARY, why);
+        bool ok = library != nullptr;
+#define LUMEN_RESOLVE(f) ok = ok && LUMEN_LIBRARY_RESOLVE(t, library, why, f);
+        LUMEN_FREETYPE_FUNCTIONS(LUMEN_RESOLVE)
+#undef LUMEN_RESOLVE
+        return ok ? &t : nullptr;
+    }();
+    if (!api) throw std::runtime_error("FreeType cannot start: " + why);
+    return *api;
+}
+
 // A raw sfnt table (empty when the font has none).
 std::vector<unsigned char> raw_table(FT_Face face, FT_ULong tag) {
     FT_ULong length = 0;
-    if (FT_Load_Sfnt_Table(face, tag, 0, nullptr, &length) != 0) return {};
+    if (freetype().FT_Load_Sfnt_Table(face, tag, 0, nullptr, &length) != 0) return {};
     std::vector<unsigned char> bytes(length);
-    if (length && FT_Load_Sfnt_Table(face, tag, 0, bytes.data(), &length) != 0) return {};
+    if (length && freetype().FT_Load_Sfnt_Table(face, tag, 0, bytes.data(), &length) != 0)
+        return {};
     return bytes;
 }
 
@@ -58,7 +89,7 @@ struct TtfFont::Impl {
         for (int platform : platforms) {
             for (int i = 0; i < face->num_charmaps; ++i) {
                 FT_CharMap map = face->charmaps[i];
-                const long format = FT_Get_CMap_Format(map);
+                const long format = freetype().FT_Get_CMap_Format(map);
                 if (map->platform_id == platform && (format == 0 || format == 4 || format == 6))
                     return map;
             }
@@ -79,18 +110,20 @@ struct TtfFont::Impl {
         if (to <= from) return 0;
         unsigned char header[4];
         FT_ULong length = sizeof header;
-        if (FT_Load_Sfnt_Table(face, TTAG_glyf, from, header, &length) != 0) return 0;
+        if (freetype().FT_Load_Sfnt_Table(face, TTAG_glyf, from, header, &length) != 0) return 0;
         return int16_t(header[2] << 8 | header[3]);
     }
 };
 
 TtfFont::TtfFont(const std::string& path) : impl_(std::make_unique<Impl>()) {
     Impl& f = *impl_;
-    if (FT_Init_FreeType(&f.library) != 0) throw std::runtime_error("FreeType cannot start");
-    if (FT_New_Face(f.library, path.c_str(), 0, &f.face) != 0)
+    const FreeType& ft = freetype();
+    if (ft.FT_Init_FreeType(&f.library) != 0) throw std::runtime_error("FreeType cannot start");
+    if (ft.FT_New_Face(f.library, path.c_str(), 0, &f.face) != 0)
         throw std::runtime_error("not a font file FreeType can read");
-    const auto* head = static_cast<const TT_Header*>(FT_Get_Sfnt_Table(f.face, FT_SFNT_HEAD));
-    const auto* hhea = static_cast<const TT_HoriHeader*>(FT_Get_Sfnt_Table(f.face, FT_SFNT_HHEA));
+    const auto* head = static_cast<const TT_Header*>(ft.FT_Get_Sfnt_Table(f.face, FT_SFNT_HEAD));
+    const auto* hhea =
+        static_cast<const TT_HoriHeader*>(ft.FT_Get_Sfnt_Table(f.face, FT_SFNT_HHEA));
     if (!head || !hhea || head->Units_Per_EM == 0 || !FT_IS_SFNT(f.face))
         throw std::runtime_error("not a TrueType font");
     f.em = head->Units_Per_EM;
@@ -105,14 +138,14 @@ TtfFont::TtfFont(const std::string& path) : impl_(std::make_unique<Impl>()) {
 }
 
 TtfFont::~TtfFont() {
-    if (impl_->face) FT_Done_Face(impl_->face);
-    if (impl_->library) FT_Done_FreeType(impl_->library);
+    if (impl_->face) freetype().FT_Done_Face(impl_->face);
+    if (impl_->library) freetype().FT_Done_FreeType(impl_->library);
 }
 
 unsigned TtfFont::glyph_index(uint32_t code, bool unicode_strings) const {
     FT_CharMap map = unicode_strings ? impl_->unicode_map : impl_->ascii_map;
-    if (!map || FT_Set_Charmap(impl_->face, map) != 0) return 0;
-    return FT_Get_Char_Index(impl_->face, code);
+    if (!map || freetype().FT_Set_Charmap(impl_->face, map) != 0) return 0;
+    return freetype().FT_Get_Char_Index(impl_->face, code);
 }
 
 FontGlyph TtfFont::glyph(unsigned index) const {
@@ -126,7 +159,8 @@ FontGlyph TtfFont::glyph(unsigned index) const {
     const int shift = header_x_min - lsb;  // undoes FreeType's
     g.advance = f.ems(u16(f.hmtx, 4 * size_t(metric)));
     g.left_bearing = f.ems(lsb);
-    if (FT_Load_Glyph(f.face, index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
+    if (freetype().FT_Load_Glyph(f.face, index,
+                                 FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
         return g;  // unreadable glyph data: a blank glyph
     const FT_Outline& outline = f.face->glyph->outline;
     if (f.face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) return g;
@@ -146,7 +180,7 @@ FontGlyph TtfFont::glyph(unsigned index) const {
 double TtfFont::kerning(unsigned left, unsigned right) const {
     FT_Vector k{0, 0};
     if (!FT_HAS_KERNING(impl_->face) ||
-        FT_Get_Kerning(impl_->face, left, right, FT_KERNING_UNSCALED, &k) != 0)
+        freetype().FT_Get_Kerning(impl_->face, left, right, FT_KERNING_UNSCALED, &k) != 0)
         return 0;
     return std::max(impl_->ems(double(k.x)), -1.0);
 }

@@ -19,20 +19,50 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <string>
 
 #include <embree3/rtcore.h>
+
+#include "base/shared_library.hpp"
 
 namespace lumen::render {
 
 namespace {
 
+// Embree's functions lumen calls, from the library opened at the first mesh that wants it
+// (base/shared_library.hpp): a scene without big meshes does not load Embree and TBB.
+#define LUMEN_EMBREE_FUNCTIONS(X)                                                           \
+    X(rtcNewDevice) X(rtcReleaseDevice) X(rtcGetDeviceError) X(rtcNewScene)                 \
+    X(rtcSetSceneFlags) X(rtcCommitScene) X(rtcReleaseScene) X(rtcNewGeometry)              \
+    X(rtcSetNewGeometryBuffer) X(rtcCommitGeometry) X(rtcAttachGeometry)                   \
+    X(rtcReleaseGeometry) X(rtcIntersect1) X(rtcOccluded1)
+
+struct Embree {
+    LUMEN_EMBREE_FUNCTIONS(LUMEN_LIBRARY_MEMBER)
+};
+
+// The functions, or null where the library cannot be opened or lacks one of them.
+const Embree* embree() {
+    static const Embree* api = []() -> const Embree* {
+        static Embree e;
+        std::string why;
+        void* library = base::open_library(LUMEN_EMBREE_LIBRARY, why);
+        bool ok = library != nullptr;
+#define LUMEN_RESOLVE(f) ok = ok && LUMEN_LIBRARY_RESOLVE(e, library, why, f);
+        LUMEN_EMBREE_FUNCTIONS(LUMEN_RESOLVE)
+#undef LUMEN_RESOLVE
+        return ok ? &e : nullptr;
+    }();
+    return api;
+}
+
 // One device for the process, on the calling thread only ("threads=1": lumen's own threads
 // trace, and builds run where the scene is prepared).
 RTCDevice device() {
     struct Holder {
-        RTCDevice d = rtcNewDevice("threads=1");
+        RTCDevice d = embree() ? embree()->rtcNewDevice("threads=1") : nullptr;
         ~Holder() {
-            if (d) rtcReleaseDevice(d);
+            if (d) embree()->rtcReleaseDevice(d);
         }
     };
     static Holder holder;
@@ -139,17 +169,18 @@ std::unique_ptr<EmbreeMesh> EmbreeMesh::build(const std::vector<glm::dvec3>& ver
         const glm::dvec3 n = glm::cross(t.e1, t.e2);
         out->planes_.push_back({n, glm::dot(n, t.p0)});
     }
-    RTCScene scene = rtcNewScene(dev);
+    RTCScene scene = embree()->rtcNewScene(dev);
     if (!scene) return nullptr;
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
-    RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+    embree()->rtcSetSceneFlags(scene,
+                               RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION | RTC_SCENE_FLAG_ROBUST);
+    RTCGeometry geom = embree()->rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(embree()->rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-    auto* ix = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+    auto* ix = static_cast<uint32_t*>(embree()->rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), tris.size()));
     if (!v || !ix) {
-        rtcReleaseGeometry(geom);
-        rtcReleaseScene(scene);
+        embree()->rtcReleaseGeometry(geom);
+        embree()->rtcReleaseScene(scene);
         return nullptr;
     }
     for (size_t i = 0; i < vertices.size(); ++i) {
@@ -158,12 +189,12 @@ std::unique_ptr<EmbreeMesh> EmbreeMesh::build(const std::vector<glm::dvec3>& ver
         for (int k = 0; k < 3; ++k) v[3 * i + k] = float(p[k]);
     }
     std::copy(index.begin(), index.end(), ix);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(scene, geom);
-    rtcReleaseGeometry(geom);
-    rtcCommitScene(scene);
-    if (rtcGetDeviceError(dev) != RTC_ERROR_NONE) {
-        rtcReleaseScene(scene);
+    embree()->rtcCommitGeometry(geom);
+    embree()->rtcAttachGeometry(scene, geom);
+    embree()->rtcReleaseGeometry(geom);
+    embree()->rtcCommitScene(scene);
+    if (embree()->rtcGetDeviceError(dev) != RTC_ERROR_NONE) {
+        embree()->rtcReleaseScene(scene);
         return nullptr;
     }
     out->scene_ = scene;
@@ -171,7 +202,7 @@ std::unique_ptr<EmbreeMesh> EmbreeMesh::build(const std::vector<glm::dvec3>& ver
 }
 
 EmbreeMesh::~EmbreeMesh() {
-    if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+    if (scene_) embree()->rtcReleaseScene(static_cast<RTCScene>(scene_));
 }
 
 namespace {
@@ -200,14 +231,14 @@ bool EmbreeMesh::nearest(const LocalRay& r, double tmin, double tmax, Found& out
     RTCRayHit rh;
     if (!embree_ray(r, centre_, tmin, tmax, rh.ray)) return false;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
+    embree()->rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
     if (confirm(q, rh.hit.primID, rh.hit.u, rh.hit.v, out)) return true;
     // Outside (tmin, tmax) in double precision: confirm every candidate.
     q.base.filter = confirm_filter;
     embree_ray(r, centre_, tmin, tmax, rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
+    embree()->rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
     return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
            confirm(q, rh.hit.primID, rh.hit.u, rh.hit.v, out);
 }
@@ -216,7 +247,7 @@ bool EmbreeMesh::any(const LocalRay& r, double tmin, double tmax, Found& out) co
     Query q(planes_.data(), r, tmin, tmax, confirm_filter);
     RTCRay ray;
     if (!embree_ray(r, centre_, tmin, tmax, ray)) return false;
-    rtcOccluded1(static_cast<RTCScene>(scene_), &q.base, &ray);
+    embree()->rtcOccluded1(static_cast<RTCScene>(scene_), &q.base, &ray);
     if (!q.any) return false;
     out = q.found;
     return true;
@@ -227,7 +258,7 @@ int EmbreeMesh::crossings(const LocalRay& r) const {
     RTCRayHit rh;
     if (!embree_ray(r, centre_, 0, INFINITY, rh.ray)) return 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
+    embree()->rtcIntersect1(static_cast<RTCScene>(scene_), &q.base, &rh);
     return q.crossings;
 }
 
