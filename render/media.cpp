@@ -80,10 +80,12 @@ struct Coefficients {
 class Integrator {
 public:
     Integrator(const std::vector<const scene::Media*>& media, const Ray& ray, bool lit,
-               const LightingEnv* env, const InteriorList* interiors, ThreadState* state)
+               const LightingEnv* env, const InteriorList* interiors, ThreadState* state,
+               const scene::Media* lead = nullptr)
         : media_(media), ray_(ray), lit_(lit), env_(env), interiors_(interiors), state_(state) {
-        // A segment of several media takes its sampling from the first with the most intervals.
-        lead_ = &lead_media(media);
+        // A segment of several media takes its sampling from the first with the most intervals
+        // (unless told otherwise).
+        lead_ = lead ? lead : &lead_media(media);
         threshold_ = lead_->aa_threshold;
         for (const scene::Media* m : media) {
             threshold_ = std::min(threshold_, m->aa_threshold);
@@ -319,9 +321,9 @@ bool atmosphere_dims(const LightSource& l, const LightingEnv& env) {
 }
 
 glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, const Ray& ray,
-                               double depth) {
+                               double depth, const scene::Media* lead) {
     if (media.empty() || !(depth > 0)) return glm::dvec3(1);
-    Integrator in(media, ray, false, nullptr, nullptr, nullptr);
+    Integrator in(media, ray, false, nullptr, nullptr, nullptr, lead);
     const glm::dvec3 t = in.run(std::min(depth, kMediaEscapeDepth)).transmittance;
     return glm::dvec3(std::isfinite(t.x) ? t.x : 0, std::isfinite(t.y) ? t.y : 0,
                       std::isfinite(t.z) ? t.z : 0);

@@ -39,9 +39,11 @@ void media_in(const InteriorList& interiors, std::vector<const scene::Media*>& o
 bool atmosphere_dims(const LightSource& light, const LightingEnv& env);
 
 // What is left of light crossing the media over the segment (shadow rays: extinction only,
-// without jitter).
+// without jitter). `lead`, where given, is the media the segment takes its sampling from in
+// place of lead_media's choice: a shadow ray leaving a container samples the stretch as that
+// container's first media says, whatever else it is in (render/shadows.cpp).
 glm::dvec3 media_transmittance(const std::vector<const scene::Media*>& media, const Ray& ray,
-                               double depth);
+                               double depth, const scene::Media* lead = nullptr);
 
 // POV-Ray's phase functions (no 1/4 pi): the share of light arriving along `to_light` that
 // scatters along `view`, alpha = to_light . view.

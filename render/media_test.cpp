@@ -128,5 +128,48 @@ TEST(Media, ShadowRaysLoseLightInContainers) {
     EXPECT_DOUBLE_EQ(to_inside.x, 1);
 }
 
+// A shadow ray leaving a container samples the stretch as that container's media says, even
+// inside another container with more intervals: a gradient-density sphere (intervals 1) inside
+// a constant fog sphere (intervals 4), as POV-Ray samples a fog-lit sample's way to the light.
+TEST(Media, ShadowRayLeavingAContainerSamplesAsItsMedia) {
+    auto clear = std::make_shared<scene::Texture>();
+    auto pigment = std::make_shared<scene::Pigment>();
+    pigment->colour = {1, 1, 1, 0, 1};
+    clear->pigment = pigment;
+    auto container = [&](double radius, std::shared_ptr<scene::Media> media) {
+        auto o = std::make_shared<scene::Object>();
+        o->shape = scene::Sphere{glm::dvec3(0), radius};
+        o->texture = {clear};
+        o->interior = scene::Interior{};
+        o->interior->media.push_back(media);
+        o->hollow = true;
+        return o;
+    };
+    auto fog = std::make_shared<scene::Media>();
+    fog->absorption = glm::dvec3(0.2);
+    fog->intervals = 4;
+    auto inner = std::make_shared<scene::Media>();
+    inner->absorption = glm::dvec3(1.5);
+    auto density = std::make_shared<scene::Pigment>();
+    density->pattern.kind = scene::pattern::Gradient{{0, 0, 1}};
+    inner->densities.push_back(density);
+    const auto outer_sphere = container(2, fog), inner_sphere = container(1, inner);
+    const Geometry g(std::vector<scene::ObjectPtr>{outer_sphere, inner_sphere});
+    InteriorList in_fog;
+    in_fog.push(&*outer_sphere->interior, &*outer_sphere->interior, true);
+    TraceCounters counters;
+    const glm::dvec3 got =
+        shadow_filter(g, glm::dvec3(0, 0, -1.5), glm::dvec3(0, 0, 1), 10, in_fog, counters);
+    // Fog to the inner sphere, both media through it led by the inner one, fog to the outside.
+    const std::vector<const scene::Media*> both = {fog.get(), inner.get()};
+    const Ray through{glm::dvec3(0, 0, -1), glm::dvec3(0, 0, 1)};
+    const double fog_alone = std::exp(-0.2 * 0.5) * std::exp(-0.2 * 1);
+    const glm::dvec3 led = media_transmittance(both, through, 2, inner.get());
+    EXPECT_NEAR(got.x, fog_alone * led.x, 1e-12);
+    // The fog's four intervals sample the gradient differently: the lead is what decides.
+    const glm::dvec3 fog_led = media_transmittance(both, through, 2);
+    EXPECT_GT(std::fabs(led.x - fog_led.x), 1e-4);
+}
+
 }  // namespace
 }  // namespace lumen::render

@@ -152,6 +152,13 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     return filter;
 }
 
+// Whether lights can add anything to the surface: a clear surface without highlights (a media
+// container's, typically) sends no shadow rays, which would cost a walk through its media each.
+bool takes_light(const scene::Finish& f, double opacity) {
+    const bool diffuse = (f.diffuse > 0 || f.diffuse_back > 0) && (opacity > 0 || f.crand > 0);
+    return diffuse || f.phong > 0 || f.specular > 0;
+}
+
 // c^e for a highlight, 0 where it is below 1e-34: c^e <= exp(e (c - 1)) since log c <= c - 1,
 // so the test is safe, and it skips the pow on most of a surface (a tight highlight's exponent
 // is in the hundreds). Nothing that small can show in a pixel.
@@ -222,7 +229,7 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
     glm::dvec3 out(0);
     if (!env.ambient_off) out += s.colour * f.ambient * env.ambient_light * s.opacity;
     out += s.colour * f.emission * s.opacity;
-    if (!env.lights) return out;
+    if (!env.lights || !takes_light(f, s.opacity)) return out;
     for (const LightSource& l : *env.lights) {
         LightSample ls;
         if (!lights_surface(l, s.light_group, s.global_lights) || !illuminate(l, s.point, ls)) continue;

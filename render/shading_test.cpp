@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "render/geometry.hpp"
 #include "render/lights.hpp"
 #include "render/shading.hpp"
 #include "render/shadows.hpp"
@@ -108,6 +109,32 @@ TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     const glm::dvec3 lit = local_light(s, env, InteriorList{}, state);
     const glm::dvec3 k = irid_factor(f, f.irid_thickness, env.irid_wavelength, 1.0, 1.0);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], 0.2 + (0.25 + 0.3) * k[c], 1e-12);
+}
+
+// A surface lights cannot add to (no diffuse, no highlights: a media container's clear skin)
+// sends no shadow rays; one with diffuse does. Each would walk through the container's media.
+TEST(Shading, ASurfaceWithoutDiffuseOrHighlightsSendsNoShadowRays) {
+    scene::Light sl;
+    sl.position = {0, 0, -10};
+    const std::vector<LightSource> lights = prepare_lights({sl});
+    const Geometry g(std::vector<scene::ObjectPtr>{});
+    LightingEnv env;
+    env.lights = &lights;
+    env.geometry = &g;
+    scene::Finish f;
+    f.ambient = glm::dvec3(0);
+    f.diffuse = 0;
+    SurfaceSample s;
+    s.view = {0, 0, 1};
+    s.normal = {0, 0, -1};
+    s.colour = glm::dvec3(1);
+    s.finish = &f;
+    ThreadState state;
+    EXPECT_EQ(local_light(s, env, InteriorList{}, state), glm::dvec3(0));
+    EXPECT_EQ(state.counters.shadow_rays, 0u);
+    f.diffuse = 0.5;
+    EXPECT_NEAR(local_light(s, env, InteriorList{}, state).x, 0.5, 1e-12);
+    EXPECT_EQ(state.counters.shadow_rays, 1u);
 }
 
 TEST(Lights, ProjectedThroughPassesOnlyAlongSegmentsCrossingTheObject) {

@@ -101,7 +101,7 @@ public:
                                     45 * hit.interior->caustics);
         const int where = inside_.find(hit.interior_id);
         if (where >= 0 && hit.interior) filter_ *= interior_fade(*hit.interior, depth, true);
-        pass_media(depth);
+        pass_media(depth, where >= 0 ? hit.interior : nullptr);
         if (inside_.in_solid()) solid_length_ += depth;
         inside_.toggle(hit.interior_id, hit.interior, hit.hollow);
         remaining_ -= depth;
@@ -119,16 +119,25 @@ private:
     // Object media dim a shadow ray over each stretch it spends in their containers up to a
     // surface it crosses (not inside a solid object, where POV-Ray has no media). Measured:
     // POV-Ray leaves the last stretch, from the last surface to the light, undimmed, so a
-    // light inside a fog box lights the floor as if there were no fog.
-    void pass_media(double depth) {
+    // light inside a fog box lights the floor as if there were no fog. A stretch that ends where
+    // the ray leaves a container (`leaving`) is sampled as that container's first media says,
+    // even where another it is in has more intervals. Measured: a fog-lit sample's shadow ray
+    // through a turbulent sphere (intervals 1) inside a fog box (intervals 4) takes POV-Ray one
+    // interval of 13 samples there; the media interval counts then agree to 17 in 1.29 million
+    // and the image matches, where the fog's 4 intervals gave 47 dB and 2.7 times the samples.
+    // Two overlapping containers (intervals 4 and 1) take the intervals of the one left, 4.
+    void pass_media(double depth, const scene::Interior* leaving) {
         if (inside_.empty() || inside_.in_solid()) {
             travelled_ += depth;
             return;
         }
         thread_local std::vector<const scene::Media*> media;  // kept: no allocation per ray
         media_in(inside_, media);
+        const scene::Media* lead =
+            leaving && !leaving->media.empty() ? leaving->media.front().get() : nullptr;
         if (!media.empty())
-            filter_ *= media_transmittance(media, Ray{origin_ + travelled_ * dir_, dir_}, depth);
+            filter_ *= media_transmittance(media, Ray{origin_ + travelled_ * dir_, dir_}, depth,
+                                           lead);
         travelled_ += depth;
     }
 
