@@ -1,6 +1,10 @@
 // background, fog, rainbow and sky_sphere (POV-Ray 3.7's rules).
 #include "interp/build_common.hpp"
 
+#include <optional>
+
+#include <glm/geometric.hpp>
+
 namespace lumen::interp {
 
 scene::Colour build_background(ItemCursor& cur) {
@@ -63,6 +67,8 @@ scene::Rainbow build_rainbow(ItemCursor& cur) {
     if (cur.next_is<std::shared_ptr<const scene::Rainbow>>())
         rainbow = *cur.next().value.as<std::shared_ptr<const scene::Rainbow>>();
     rainbow.loc = cur.block_loc();
+    std::optional<double> arc, falloff;
+    if (rainbow.arc) arc = rainbow.arc->arc_angle, falloff = rainbow.arc->falloff_angle;
     while (!cur.at_end()) {
         if (cur.next_is<std::shared_ptr<const ColourMapValue>>()) {  // colour_map { } or its identifier
             rainbow.colour_map = cur.next().value.as<std::shared_ptr<const ColourMapValue>>()->entries;
@@ -78,10 +84,23 @@ scene::Rainbow build_rainbow(ItemCursor& cur) {
         else if (w == "jitter") rainbow.jitter = cur.expect_float(w);
         else if (w == "up") rainbow.up = cur.expect_vector(w);
         else if (w == "arc_angle" || w == "falloff_angle") {
-            cur.expect_float(w);
-            // A partial arc is not built: the whole ring would be wrong, so it is refused.
-            if (!rainbow.unsupported) rainbow.unsupported = scene::Unsupported{"rainbow " + w, item.loc};
+            const double a = cur.expect_float(w);
+            // POV-Ray's range check, as each is read.
+            if (!(a >= 0 && a <= 360))
+                cur.fail(item.loc, "illegal " + w + " in rainbow", "use a value from 0 to 360 degrees");
+            (w == "arc_angle" ? arc : falloff) = a;
         } else cur.fail_unexpected(item, keywords);
+    }
+    // Checked at the end of the block, as POV-Ray does (whether or not the arc is partial).
+    if (rainbow.up == glm::dvec3(0)) cur.fail(rainbow.loc, "rainbow's up vector is zero");
+    if (glm::length(glm::cross(glm::normalize(rainbow.up), glm::normalize(rainbow.direction))) <
+        1e-10)
+        cur.fail(rainbow.loc, "rainbow's up and direction vectors are co-linear");
+    // Only arc_angle makes a partial arc: falloff_angle alone changes nothing (probed).
+    if (arc) {
+        if (*arc < falloff.value_or(*arc))
+            cur.fail(rainbow.loc, "rainbow arc_angle is smaller than its falloff_angle");
+        rainbow.arc = scene::Rainbow::Arc{*arc, falloff.value_or(*arc)};
     }
     return rainbow;
 }

@@ -259,8 +259,6 @@ void finish_scene(BuildContext& ctx, scene::Scene& scene) {
     }
     for (const auto& f : scene.fogs)
         if (f.unsupported) out.push_back(*f.unsupported);
-    for (const auto& r : scene.rainbows)
-        if (r.unsupported) out.push_back(*r.unsupported);
     for (const auto& m : scene.atmosphere)
         for (const auto& d : m->densities) collect(d, out);
     if (scene.sky_sphere)

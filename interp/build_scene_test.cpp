@@ -106,16 +106,42 @@ TEST_F(BuildScene, RainbowAndItsIdentifier) {
     EXPECT_EQ(error_of("rainbow { angle 20 fog_type 2 }").substr(0, 19), "t.pov:1:20: error: ");
 }
 
+// arc_angle makes a partial arc, falloff_angle defaulting to it; falloff_angle alone changes
+// nothing; POV-Ray's checks (probed): each angle in 0..360, the arc no smaller than the
+// falloff, an up vector that is neither zero nor along the direction (arc or not).
+TEST_F(BuildScene, RainbowArcAndItsChecks) {
+    scene::Scene s = run("rainbow { angle 40 width 5 arc_angle 120 }\n"
+                         "rainbow { angle 40 width 5 falloff_angle 30 arc_angle 90 }\n"
+                         "rainbow { angle 40 width 5 falloff_angle 30 }\n");
+    ASSERT_EQ(s.rainbows.size(), 3u);
+    ASSERT_TRUE(s.rainbows[0].arc);
+    EXPECT_DOUBLE_EQ(s.rainbows[0].arc->arc_angle, 120);
+    EXPECT_DOUBLE_EQ(s.rainbows[0].arc->falloff_angle, 120);
+    ASSERT_TRUE(s.rainbows[1].arc);
+    EXPECT_DOUBLE_EQ(s.rainbows[1].arc->arc_angle, 90);
+    EXPECT_DOUBLE_EQ(s.rainbows[1].arc->falloff_angle, 30);
+    EXPECT_FALSE(s.rainbows[2].arc);
+    EXPECT_TRUE(s.unsupported.empty());
+    EXPECT_NE(error_of("rainbow { angle 40 arc_angle 400 }").find("1:20: error: illegal arc_angle"),
+              std::string::npos);
+    EXPECT_NE(error_of("rainbow { falloff_angle -1 }").find("illegal falloff_angle"),
+              std::string::npos);
+    EXPECT_NE(error_of("rainbow { arc_angle 90 falloff_angle 120 }").find("smaller than"),
+              std::string::npos);
+    EXPECT_NE(error_of("rainbow { up 0 }").find("up vector is zero"), std::string::npos);
+    EXPECT_NE(error_of("rainbow { direction z up z }").find("co-linear"), std::string::npos);
+}
+
 TEST_F(BuildScene, UnsupportedListInSourceOrderWithoutDuplicates) {
     scene::Scene s = run(
         "#declare P = pigment { facets }\n"
         "sphere { 0, 1 pigment { P } }\n"
         "sphere { 0, 1 pigment { P } }\n"
-        "rainbow { angle 42 arc_angle 120 }\n"
+        "global_settings { mm_per_unit 40 }\n"
         "lemon { <0, 0, 0>, <0, 1, 0>, 1, 0.5 }\n");
     ASSERT_EQ(s.unsupported.size(), 3u);
     EXPECT_EQ(s.unsupported[0].feature, "pattern 'facets'");
-    EXPECT_EQ(s.unsupported[1].feature, "rainbow arc_angle");
+    EXPECT_EQ(s.unsupported[1].feature, "subsurface");
     EXPECT_EQ(s.unsupported[2].feature, "lemon");
     EXPECT_EQ(s.unsupported[2].loc.line, 5u);
 }

@@ -34,7 +34,10 @@ Json rainbow(const scene::Rainbow& r) {
     put_if(o, "jitter", r.jitter, d.jitter);
     put_if(o, "up", r.up, d.up);
     if (!r.colour_map.empty()) o.put("colour_map", colour_map(r.colour_map));
-    if (r.unsupported) o.put("unsupported", unsupported_text(*r.unsupported));
+    if (r.arc) {
+        o.put("arc_angle", Json::num(r.arc->arc_angle));
+        o.put("falloff_angle", Json::num(r.arc->falloff_angle));
+    }
     return o;
 }
 

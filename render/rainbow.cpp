@@ -10,6 +10,23 @@
 
 namespace lumen::render {
 
+double arc_strength(const scene::Rainbow::Arc& arc, const glm::dvec3& axis, const glm::dvec3& up,
+                    const glm::dvec3& dir) {
+    // The azimuths of `dir` and `up` around the axis (the builder refuses an up along it).
+    const glm::dvec3 across = glm::normalize(up - glm::dot(up, axis) * axis);
+    const glm::dvec3 v = dir - glm::dot(dir, axis) * axis;
+    const double len = glm::length(v);
+    const double cosine = len > 0 ? std::clamp(glm::dot(v, across) / len, -1.0, 1.0) : 1.0;
+    const double azimuth = std::acos(cosine) * (180 / std::numbers::pi);
+    const double end = arc.arc_angle / 2, full = arc.falloff_angle / 2;
+    if (azimuth > end) return 0;
+    if (azimuth <= full) return 1;
+    // Probed: 1 - 3x^2 + 2x^3 over x = (azimuth - full) / (end - full), to 8-bit rounding at
+    // arcs of 90-360 degrees with falloffs of 0-90.
+    const double x = (azimuth - full) / (end - full);
+    return 1 - x * x * (3 - 2 * x);
+}
+
 bool through_rainbow(const scene::Rainbow& r, const glm::dvec3& dir, double depth,
                      const glm::dvec3& behind, double u, glm::dvec3& seen, double& transmit) {
     const double len = glm::length(r.direction);
@@ -22,13 +39,19 @@ bool through_rainbow(const scene::Rainbow& r, const glm::dvec3& dir, double dept
     double index = (theta - (r.angle - r.width / 2)) / r.width;
     if (r.jitter > 0) index += r.jitter * (2 * u - 1);
     if (!(index >= 0 && index <= 1)) return false;
+    const double strength = r.arc ? arc_strength(*r.arc, r.direction / len, r.up, dir) : 1;
+    if (!(strength > 0)) return false;
     const scene::Colour c = lookup_colour_map(r.colour_map, index);
     const glm::dvec3 rgb(c.r, c.g, c.b);
     // What shows through: the fog term, at least the colour's transmit. The filter tints it
     // by the part the fog term leaves (filter 0.5, transmit 0.2 over rgb 0.5, 0.6, 0.7 gave
     // 0.73201, 0.4112, 0.25521).
     // (At most 1: a negative distance would otherwise amplify what lies behind.)
-    const double k = std::clamp(std::max(std::exp(-depth / r.distance), c.t), 0.0, 1.0);
+    // Towards an arc's ends the band fades: its cover, 1 - k, shrinks by the arc's strength
+    // (probed on tests/atmosphere/rainbow_arc.pov, whose map filters and transmits: 91 dB
+    // against POV-Ray, where blending the faded band's result over what lies behind gave 49).
+    const double k = 1 - strength * (1 - std::clamp(std::max(std::exp(-depth / r.distance), c.t),
+                                                    0.0, 1.0));
     const double f = c.f * (1 - k);
     transmit = k;
     seen = behind * (k * ((1 - f) + f * rgb)) + (1 - k) * rgb;

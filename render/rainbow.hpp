@@ -13,6 +13,11 @@
 
 namespace lumen::render {
 
+// How strongly a partial arc covers the band along unit `dir`: 1 within falloff_angle/2 of
+// `up`'s azimuth around the unit `axis`, fading smoothly to 0 at arc_angle/2, 0 beyond.
+double arc_strength(const scene::Rainbow::Arc& arc, const glm::dvec3& axis, const glm::dvec3& up,
+                    const glm::dvec3& dir);
+
 // `behind` seen through rainbow `r` along unit direction `dir` over `depth` (2e10 for the
 // sky); `u` in [0, 1) places the jitter. False where the ray misses the band; else `seen` is
 // the colour and `transmit` the part of what lies behind that shows through.

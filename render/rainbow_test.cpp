@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -117,6 +118,25 @@ TEST(Rainbow, OverlappingBandsAverage) {
     double t = 1;
     expect_rgb(through_rainbows({a, b}, d, kSky, {0.45, 0.6, 0.85}, [] { return 0.0; }, t),
                {0.700435, 0.750973, 0.529473});
+}
+
+// A partial arc (POV-Ray's profile, probed): full within falloff_angle/2 of up's azimuth,
+// 1 - 3x^2 + 2x^3 across the fade, nothing past arc_angle/2; the azimuth is taken around the
+// rainbow's axis, so up's component along it does not matter.
+TEST(Rainbow, ArcStrengthFadesSmoothlyToTheArcsEnds) {
+    const scene::Rainbow::Arc arc{180, 60};  // full to 30 degrees, gone past 90
+    const glm::dvec3 axis(0, 0, 1), up(0, 1, 0);
+    auto at = [&](double azimuth_deg) {
+        const double a = azimuth_deg * std::numbers::pi / 180;
+        return arc_strength(arc, axis, up, glm::normalize(glm::dvec3(std::sin(a), std::cos(a), 2)));
+    };
+    EXPECT_DOUBLE_EQ(at(0), 1);
+    EXPECT_DOUBLE_EQ(at(29), 1);
+    EXPECT_NEAR(at(60), 0.5, 1e-9);
+    EXPECT_NEAR(at(-45), 1 - 3 * 0.0625 + 2 * 0.015625, 1e-9);  // x = 1/4, either side
+    EXPECT_DOUBLE_EQ(at(91), 0);
+    const glm::dvec3 tilted_up(0, 1, 5), straight_up = glm::normalize(glm::dvec3(0, 1, 2));
+    EXPECT_DOUBLE_EQ(arc_strength(arc, axis, tilted_up, straight_up), 1);
 }
 
 }  // namespace

@@ -71,7 +71,13 @@ struct Rainbow {
     double jitter = 0;  // the band position moves by up to ± jitter
     glm::dvec3 up{0, 1, 0};
     ColourMap colour_map;
-    std::optional<Unsupported> unsupported;  // arc_angle, falloff_angle
+    // A partial arc, where arc_angle is given: the band spans the azimuths (around the
+    // direction) within arc_angle/2 of `up`'s, at full strength within falloff_angle/2 (which
+    // defaults to arc_angle), fading out to the arc's ends beyond. Degrees, 0 to 360.
+    struct Arc {
+        double arc_angle = 360, falloff_angle = 360;
+    };
+    std::optional<Arc> arc;
     SourceLoc loc;
 };
 
