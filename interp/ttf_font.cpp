@@ -30,22 +30,12 @@ namespace {
     X(FT_Get_Sfnt_Table) X(FT_Load_Sfnt_Table) X(FT_Get_CMap_Format) X(FT_Set_Charmap)      \
     X(FT_Get_Char_Index) X(FT_Load_Glyph) X(FT_Get_Kerning)
 
-struct FreeType {
-    LUMEN_FREETYPE_FUNCTIONS(LUMEN_LIBRARY_MEMBER)
-};
+LUMEN_LIBRARY_API(FreeType, LUMEN_FREETYPE_FUNCTIONS)
 
 // The functions; throws where the library cannot be opened or lacks one of them.
 const FreeType& freetype() {
-    static std::string why;
-    static const FreeType* api = []() -> const FreeType* {
-        static FreeType t;
-        void* library = base::open_library(LUMEN_FREETYPE_LIBRARY, why);
-        bool ok = library != nullptr;
-#define LUMEN_RESOLVE(f) ok = ok && LUMEN_LIBRARY_RESOLVE(t, library, why, f);
-        LUMEN_FREETYPE_FUNCTIONS(LUMEN_RESOLVE)
-#undef LUMEN_RESOLVE
-        return ok ? &t : nullptr;
-    }();
+    std::string why;
+    const FreeType* api = base::library_api<FreeType>(LUMEN_FREETYPE_LIBRARY, why);
     if (!api) throw std::runtime_error("FreeType cannot start: " + why);
     return *api;
 }

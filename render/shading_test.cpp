@@ -86,6 +86,16 @@ TEST(Shading, IridTurbulenceVariesTheThicknessWithTheSceneGenerator) {
     }
 }
 
+// A white surface point at the origin facing a light on -z, seen head-on, with finish `f`.
+SurfaceSample facing_light(const scene::Finish& f) {
+    SurfaceSample s;
+    s.view = {0, 0, 1};
+    s.normal = {0, 0, -1};
+    s.colour = glm::dvec3(1);
+    s.finish = &f;
+    return s;
+}
+
 TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     scene::Light sl;
     sl.position = {0, 0, -10};
@@ -99,11 +109,7 @@ TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     f.phong = 0.3;
     f.irid_amount = 0.5;
     f.irid_thickness = 0.1;
-    SurfaceSample s;
-    s.view = {0, 0, 1};
-    s.normal = {0, 0, -1};
-    s.colour = glm::dvec3(1);
-    s.finish = &f;
+    SurfaceSample s = facing_light(f);
     s.film_thickness = irid_thickness(f, s.point, env.noise_generator);  // as the tracer sets it
     ThreadState state;
     const glm::dvec3 lit = local_light(s, env, InteriorList{}, state);
@@ -124,11 +130,7 @@ TEST(Shading, ASurfaceWithoutDiffuseOrHighlightsSendsNoShadowRays) {
     scene::Finish f;
     f.ambient = glm::dvec3(0);
     f.diffuse = 0;
-    SurfaceSample s;
-    s.view = {0, 0, 1};
-    s.normal = {0, 0, -1};
-    s.colour = glm::dvec3(1);
-    s.finish = &f;
+    const SurfaceSample s = facing_light(f);
     ThreadState state;
     EXPECT_EQ(local_light(s, env, InteriorList{}, state), glm::dvec3(0));
     EXPECT_EQ(state.counters.shadow_rays, 0u);

@@ -37,21 +37,14 @@ namespace {
     X(rtcSetNewGeometryBuffer) X(rtcCommitGeometry) X(rtcAttachGeometry)                   \
     X(rtcReleaseGeometry) X(rtcIntersect1) X(rtcOccluded1)
 
-struct Embree {
-    LUMEN_EMBREE_FUNCTIONS(LUMEN_LIBRARY_MEMBER)
-};
+LUMEN_LIBRARY_API(Embree, LUMEN_EMBREE_FUNCTIONS)
 
-// The functions, or null where the library cannot be opened or lacks one of them.
+// The functions, or null where the library cannot be opened or lacks one of them (looked up
+// once: every ray calls through them).
 const Embree* embree() {
-    static const Embree* api = []() -> const Embree* {
-        static Embree e;
+    static const Embree* api = [] {
         std::string why;
-        void* library = base::open_library(LUMEN_EMBREE_LIBRARY, why);
-        bool ok = library != nullptr;
-#define LUMEN_RESOLVE(f) ok = ok && LUMEN_LIBRARY_RESOLVE(e, library, why, f);
-        LUMEN_EMBREE_FUNCTIONS(LUMEN_RESOLVE)
-#undef LUMEN_RESOLVE
-        return ok ? &e : nullptr;
+        return base::library_api<Embree>(LUMEN_EMBREE_LIBRARY, why);
     }();
     return api;
 }
