@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Usage: tools/tsan-check.sh LUMEN_TSAN_BINARY
 # Renders multithreaded (+WT2) scenes with a ThreadSanitizer build of lumen (`make tsan`
-# builds one) and fails if TSan reports anything: the examples with anti-aliasing, an
-# animation, the teapot (meshes traced through Embree), cornell.pov with both radiosity
-# displays (the irradiance cache is shared by the render threads), radiosity through CSG and
-# media photons. Small sizes: TSan runs
-# 5-15x slower.
+# builds one) and fails if TSan reports anything: the examples with anti-aliasing (text.pov
+# opens FreeType on first use), an animation, the teapot (meshes traced through Embree, also
+# opened on first use), cornell.pov with both radiosity displays (the irradiance cache is
+# shared by the render threads), radiosity through CSG and media photons. Small sizes: TSan
+# runs 5-15x slower.
 set -uo pipefail
 lumen=$(realpath "${1:?usage: tools/tsan-check.sh LUMEN_TSAN_BINARY}")
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,7 +24,7 @@ check() {  # name, lumen arguments...
         grep -A30 'WARNING: ThreadSanitizer' "$work/$name.log" | head -60
     fi
 }
-for scene in showcase glass lights csg patterns antialias irid isosurface media image_map caustics; do
+for scene in showcase glass lights csg patterns antialias irid isosurface media image_map caustics text; do
     check "$scene" "$root/examples/$scene.pov" +W96 +H72 +A0.3
 done
 check animation "$root/examples/animation.pov" +W48 +H36 +KFI1 +KFF3
