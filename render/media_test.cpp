@@ -130,7 +130,8 @@ TEST(Media, ShadowRaysLoseLightInContainers) {
 
 // A shadow ray leaving a container samples the stretch as that container's media says, even
 // inside another container with more intervals: a gradient-density sphere (intervals 1) inside
-// a constant fog sphere (intervals 4), as POV-Ray samples a fog-lit sample's way to the light.
+// a constant fog sphere (intervals 4): the rule of render/shadows.cpp (closer to POV-Ray than the
+// most-intervals lead, not yet all of its rule).
 TEST(Media, ShadowRayLeavingAContainerSamplesAsItsMedia) {
     auto clear = std::make_shared<scene::Texture>();
     auto pigment = std::make_shared<scene::Pigment>();
