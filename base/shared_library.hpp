@@ -37,7 +37,8 @@ void* library_symbol(void* library, const char* symbol, std::string& why);
 namespace lumen::base {
 
 // The functions of `Api` (made by LUMEN_LIBRARY_API) from library `name`, resolved once per
-// process; null with `why` set where the library cannot be opened or lacks one of them.
+// process; null with `why` set where the library cannot be opened or lacks one of them (a
+// found library costs its callers one test per call: FreeType's are made per glyph).
 template <class Api>
 const Api* library_api(const char* name, std::string& why) {
     static std::string error;
@@ -45,7 +46,7 @@ const Api* library_api(const char* name, std::string& why) {
         static Api functions;
         return functions.resolve(open_library(name, error), error) ? &functions : nullptr;
     }();
-    why = error;
+    if (!api) why = error;
     return api;
 }
 
