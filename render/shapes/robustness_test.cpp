@@ -281,6 +281,33 @@ TEST(Disc, HoleAndRadius) {
     EXPECT_FALSE(Geometry::inside(*make(scene::Disc{}), {0, 0.1, 0}));
 }
 
+// POV-Ray's disc box, as povray showed it through an intersection of a big box with a disc
+// (orthographic views, 0.01 per pixel): normal y gives the radius across and 0.001 either side
+// of the plane; normal <1, 2, 3>, radius 1, gives half-widths 1.04, 0.92 and 0.80 (the tightest
+// box would be 0.96, 0.85 and 0.60). It scales with the disc.
+TEST(Disc, BoxIsPovRaysSquareInTheDiscsFrame) {
+    Aabb flat = bounds(make_disc(scene::Disc{{1, 2, 3}, {0, -1, 0}, 10.1, 0}));
+    EXPECT_NEAR(flat.lo.x, 1 - 10.1, 1e-12);
+    EXPECT_NEAR(flat.hi.z, 3 + 10.1, 1e-12);
+    EXPECT_NEAR(flat.lo.y, 2 - 1e-3, 1e-12);
+    EXPECT_NEAR(flat.hi.y, 2 + 1e-3, 1e-12);
+    Aabb tilted = bounds(make_disc(scene::Disc{{0, 0, 0}, {1, 2, 3}, 1, 0}));
+    const glm::dvec3 measured(1.04, 0.92, 0.80);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(tilted.hi[i], measured[i], 0.01) << i;
+        EXPECT_NEAR(tilted.lo[i], -measured[i], 0.01) << i;
+    }
+    DiscShape scaled;
+    ASSERT_TRUE(ShapeTraits<scene::Disc>::bake(scene::Disc{{0, 0, 0}, {0, 1, 0}, 5, 0},
+                                               scale({3, 3, 3}), scaled));
+    EXPECT_NEAR(bounds(scaled).hi.y, 3e-3, 1e-12);
+    // Facing -z, where the rotation onto the normal is half a turn: still the square.
+    Aabb back = bounds(make_disc(scene::Disc{{0, 0, 0}, {0, 0, -1}, 2, 0}));
+    EXPECT_NEAR(back.hi.x, 2, 1e-12);
+    EXPECT_NEAR(back.hi.y, 2, 1e-12);
+    EXPECT_NEAR(back.hi.z, 1e-3, 1e-12);
+}
+
 TEST(Triangle, TwoSidedFlatAndSmooth) {
     scene::Triangle t;
     t.p = {glm::dvec3{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
