@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/source.hpp"
+#include "parser/node_pool.hpp"
 
 namespace lumen::ast {
 
@@ -133,6 +134,9 @@ struct Node {
 
     Node() = default;
     Node(Kind k, SourceLoc l) : kind(k), loc(l) {}
+    // Nodes come from the node pool (parser/node_pool.hpp).
+    static void* operator new(std::size_t size) { return allocate_node_slot(size); }
+    static void operator delete(void* p, std::size_t size) noexcept { free_node_slot(p, size); }
     // The operators, parameters and macro body range (made on first write).
     NodeExtra& more() {
         if (!extra) extra = std::make_unique<NodeExtra>();

@@ -10,7 +10,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 #include "render/shapes/triangle.hpp"
 
 namespace lumen::render {
