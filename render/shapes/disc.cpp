@@ -9,7 +9,7 @@
 namespace lumen::render {
 
 DiscShape make_disc(const scene::Disc& d) {
-    DiscShape out{d.center, d.normal, d.radius * d.radius, d.hole * d.hole, true, kDiscBoxThickness};
+    DiscShape out{d.center, d.normal, d.radius * d.radius, d.hole * d.hole, true};
     double len = glm::length(d.normal);
     out.valid = len > 0 && std::isfinite(len) && d.radius > 0 && std::isfinite(d.radius) &&
                 std::isfinite(d.hole) && std::isfinite(glm::dot(d.center, d.center));
