@@ -185,10 +185,14 @@ struct Geometry::Impl {
     template <class Visit>
     void for_each_candidate(const Ray& ray, double t_min, const double& limit, Query query,
                             Visit&& visit) const {
+        for_each_candidate(SlabRay(ray.origin, ray.dir), t_min, limit, query, visit);
+    }
+    template <class Visit>
+    void for_each_candidate(const SlabRay& slab, double t_min, const double& limit, Query query,
+                            Visit&& visit) const {
         const uint8_t hide = hidden_bits(query);
         for (const Root& r : unbounded)
             if (!(r.hidden & hide)) visit(r);
-        const SlabRay slab(ray.origin, ray.dir);
         const size_t n = bounded.size();
         if (n <= kDirectRoots) {
             // A handful of objects: past the box around them all (one test culls most shadow
@@ -205,6 +209,27 @@ struct Geometry::Impl {
                 prune = limit;
             });
         }
+    }
+
+    // Occluder numbering: the unbounded roots, then the bounded ones.
+    uint32_t root_number(const Root& r) const {
+        const Root* p = &r;
+        if (p >= unbounded.data() && p < unbounded.data() + unbounded.size())
+            return uint32_t(p - unbounded.data());
+        return uint32_t(unbounded.size() + (p - bounded.data()));
+    }
+    // The root an Occluder names, if `query` sees it and the ray may meet its box.
+    const Root* hinted_root(uint32_t number, const SlabRay& slab, double t_min, double t_max,
+                            Query query) const {
+        const Root* r = nullptr;
+        if (number < unbounded.size()) {
+            r = &unbounded[number];
+        } else if (number - unbounded.size() < bounded.size()) {
+            const size_t i = number - unbounded.size();
+            if (!slab.hits(bounded_boxes[i], t_min, t_max)) return nullptr;
+            r = &bounded[i];
+        }
+        return r && !(r->hidden & hidden_bits(query)) ? r : nullptr;
     }
 
     // Per query: the box around the bounded roots it sees, whether they can all be listed,
@@ -375,21 +400,28 @@ bool Geometry::intersect(const Ray& ray, double t_min, double t_max, Hit& hit, Q
 
 bool Geometry::opaque_only(Query query) const { return impl_->opaque_only[int(query)]; }
 
-bool Geometry::occluded(const Ray& ray, double t_min, double t_max, Query query) const {
+bool Geometry::occluded(const Ray& ray, double t_min, double t_max, Query query,
+                        Occluder* last) const {
     const NodeStore& store = impl_->store;
     const LocalRay local{ray.origin, ray.dir};
     const ShadowRayMark mark(query != Query::All);  // isosurfaces' cross-ray cache
-    bool found = false;
-    double limit = t_max;  // -inf once found: the BVH walk then meets no further box
-    impl_->for_each_candidate(ray, t_min, limit, query, [&](const Root& r) {
-        if (found) return;
+    auto blocks = [&](const Root& r) {
         NodeHit h;
-        const bool hit = r.kind == Root::Kind::Node
-                             ? intersect_node(store, r.node, ray, t_min, t_max, true, h, true)
-                             : intersect_root(store, r, ray, local, t_min, t_max, true, h);
-        if (hit) found = true, limit = -Aabb::inf;
+        return r.kind == Root::Kind::Node
+                   ? intersect_node(store, r.node, ray, t_min, t_max, true, h, true)
+                   : intersect_root(store, r, ray, local, t_min, t_max, true, h);
+    };
+    const SlabRay slab(ray.origin, ray.dir);
+    const Root* hinted = last ? impl_->hinted_root(last->root, slab, t_min, t_max, query) : nullptr;
+    if (hinted && blocks(*hinted)) return true;
+    const Root* found = nullptr;
+    double limit = t_max;  // -inf once found: the BVH walk then meets no further box
+    impl_->for_each_candidate(slab, t_min, limit, query, [&](const Root& r) {
+        if (found || &r == hinted) return;
+        if (blocks(r)) found = &r, limit = -Aabb::inf;
     });
-    return found;
+    if (found && last) last->root = impl_->root_number(*found);
+    return found != nullptr;
 }
 
 Intersector::Listing Geometry::shadow_listing(Query query) const {

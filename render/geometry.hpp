@@ -54,7 +54,8 @@ public:
 
     bool has_clear_objects() const override;
     bool opaque_only(Query query) const override;
-    bool occluded(const Ray& ray, double t_min, double t_max, Query query) const override;
+    bool occluded(const Ray& ray, double t_min, double t_max, Query query,
+                  Occluder* last = nullptr) const override;
     bool near_clear_object(const glm::dvec3& p) const override;
 
     // True if world point p is inside `object` (used for media/fog decisions and tests).

@@ -19,6 +19,14 @@ enum class Query : uint8_t {
     ShadowSkipClear,  // those, less the clear ones (see has_clear_objects)
 };
 
+// The object that last blocked a shadow ray towards one light, which the next ray towards it
+// tests first: nearby shadow rays (an area light's grid, neighbouring pixels) are mostly
+// blocked by the same object, and one object test spares the walk through the rest. POV-Ray
+// keeps the same cache per light. Only a hint: occluded() answers the same whatever it holds.
+struct Occluder {
+    uint32_t root = UINT32_MAX;  // the geometry's own numbering; UINT32_MAX: none yet
+};
+
 class Intersector {
 public:
     virtual ~Intersector() = default;
@@ -49,7 +57,9 @@ public:
     // not, and needs no walk from surface to surface.
     virtual bool opaque_only(Query) const { return false; }
     // Whether some surface `query` sees lies at t_min < t < t_max (not necessarily the nearest).
-    virtual bool occluded(const Ray& ray, double t_min, double t_max, Query query) const {
+    // `last`, where given, is tested first and then names the object found.
+    virtual bool occluded(const Ray& ray, double t_min, double t_max, Query query,
+                          Occluder* /*last*/ = nullptr) const {
         Hit hit;
         return intersect(ray, t_min, t_max, hit, query);
     }

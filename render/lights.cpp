@@ -127,9 +127,8 @@ bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out)
            std::fabs(out.colour.z) >= kEpsilon;
 }
 
-std::optional<double> projection_reach(const LightSource& l, const glm::dvec3& point,
-                                       const glm::dvec3& dir, double distance) {
-    if (!l.projection) return distance;
+std::optional<double> projected_reach(const LightSource& l, const glm::dvec3& point,
+                                      const glm::dvec3& dir, double distance) {
     // Only the segment between the point and the light counts (an object beyond the light
     // projects nothing), with the shadow rays' tolerance at both ends.
     constexpr double kTolerance = 1e-3;

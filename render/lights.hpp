@@ -59,8 +59,13 @@ bool illuminate(const LightSource& light, const glm::dvec3& point, LightSample& 
 // the segment misses it, else up to its nearest crossing. POV-Ray tests no further (measured:
 // an object between the projected one and the light, or the projected object itself placed in
 // the scene, casts no shadow).
-std::optional<double> projection_reach(const LightSource& light, const glm::dvec3& point,
-                                       const glm::dvec3& dir, double distance);
+std::optional<double> projected_reach(const LightSource& light, const glm::dvec3& point,
+                                      const glm::dvec3& dir, double distance);
+inline std::optional<double> projection_reach(const LightSource& light, const glm::dvec3& point,
+                                              const glm::dvec3& dir, double distance) {
+    if (!light.projection) return distance;  // the common case, on every shadow ray
+    return projected_reach(light, point, dir, distance);
+}
 
 // World position of area-light grid sample (u, v), given as fractional grid indices so jitter
 // can move it; `to_light` (unit, point -> light centre) is used by `orient`.

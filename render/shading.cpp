@@ -32,8 +32,10 @@ const scene::LightPhotons* photon_shadows(const LightSource& l, const SurfaceSam
 class AreaShadow {
 public:
     AreaShadow(const LightSource& l, const SurfaceSample& s, const LightSample& centre,
-               const LightingEnv& env, const InteriorList& interiors, ThreadState& state)
-        : l_(l), s_(s), centre_(centre), env_(env), interiors_(interiors), state_(state) {
+               const LightingEnv& env, const InteriorList& interiors, ThreadState& state,
+               Occluder* occluder)
+        : l_(l), s_(s), centre_(centre), env_(env), interiors_(interiors), state_(state),
+          occluder_(occluder) {
         const size_t n = size_t(l.n1) * l.n2;
         state.area_filter.resize(n);
         state.area_valid.assign(n, 0);
@@ -62,7 +64,8 @@ private:
             const std::optional<double> reach = projection_reach(l_, s_.point, to, dist);
             state_.area_filter[k] =
                 reach ? shadow_filter(*env_.geometry, s_.point, to, *reach, interiors_,
-                                      state_.counters, nullptr, photon_shadows(l_, s_, env_))
+                                      state_.counters, nullptr, photon_shadows(l_, s_, env_),
+                                      occluder_)
                       : glm::dvec3(0);
             state_.area_valid[k] = 1;
         }
@@ -97,6 +100,7 @@ private:
     const LightingEnv& env_;
     const InteriorList& interiors_;
     ThreadState& state_;
+    Occluder* occluder_;
 };
 
 // Whether fog dims this light on its way to a surface: POV's `media_attenuation on`.
@@ -127,6 +131,7 @@ bool shadowed_by_itself(const SurfaceSample& s, const glm::dvec3& dir, const Lig
 // to the light's centre), as in POV.
 glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightSample& ls,
                       const LightingEnv& env, const InteriorList& interiors, ThreadState& state) {
+    Occluder* occluder = state.occluder(size_t(&l - env.lights->data()));
     glm::dvec3 filter;
     const bool fog = fog_dims(l, env);
     // Atmospheric media dims it likewise (object media always do: render/shadows.cpp).
@@ -137,12 +142,13 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
     } else if (shadowed_by_itself(s, ls.dir, env)) {
         return glm::dvec3(0);
     } else if (l.area && env.quality >= 5) {
-        filter = AreaShadow(l, s, ls, env, interiors, state).filter();
+        filter = AreaShadow(l, s, ls, env, interiors, state, occluder).filter();
     } else {
         const std::optional<double> reach = projection_reach(l, s.point, ls.dir, ls.distance);
         if (!reach) return glm::dvec3(0);
         filter = shadow_filter(*env.geometry, s.point, ls.dir, *reach, interiors, state.counters,
-                               fog || media ? &solid : nullptr, photon_shadows(l, s, env));
+                               fog || media ? &solid : nullptr, photon_shadows(l, s, env),
+                               occluder);
     }
     if (media && solid < ls.distance && filter != glm::dvec3(0))
         filter *= media_transmittance(*env.atmosphere, Ray{s.point, ls.dir}, ls.distance - solid);

@@ -56,6 +56,13 @@ glm::dvec3 interior_fade(const scene::Interior& in, double depth, bool shadow_ra
 
 namespace {
 
+// The reach of a shadow ray's next query, `remaining` short of the light; false where POV's
+// loop ends instead (the rest of the way is within the tolerance).
+bool next_reach(double remaining, double& t_max) {
+    t_max = remaining - kShadowTolerance;
+    return !(t_max <= kShadowTolerance);
+}
+
 // The light left after the surfaces a shadow ray crosses, taken nearest first: POV's loop of
 // one nearest-hit query per surface, each from the last surface passed, ignoring surfaces
 // closer than the tolerance to it. Both ways of finding the surfaces (one query per surface,
@@ -73,8 +80,7 @@ public:
     // Starts the next query; false where POV's loop ends instead (the rest of the way is
     // within the tolerance, or the surface bound is reached). t_max: the query's reach.
     bool next_query(double& t_max) {
-        t_max = remaining_ - kShadowTolerance;
-        if (steps_ == kMaxShadowSurfaces || t_max <= kShadowTolerance) return false;
+        if (!next_reach(remaining_, t_max) || steps_ == kMaxShadowSurfaces) return false;
         ++steps_;
         ++counters_.shadow_rays;
         return true;
@@ -206,7 +212,7 @@ void step_through(const Intersector& geometry, Query query, const glm::dvec3& po
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
                          TraceCounters& counters, double* solid_length,
-                         const scene::LightPhotons* refracted) {
+                         const scene::LightPhotons* refracted, Occluder* occluder) {
     // Most shadow rays never come near a clear object's surface: skipping those objects spares
     // their intersections and textures (not where a clear photon target blocks the light).
     if (geometry.has_clear_objects() && !solid_length && !refracted) {
@@ -214,16 +220,17 @@ glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
         step_through(geometry, Query::ShadowSkipClear, point, skipping);
         if (!skipping.gave_up()) return skipping.filter();
     }
-    ShadowWalk all(point, dir, distance, interiors, counters, nullptr, refracted);
     if (!solid_length && geometry.opaque_only(Query::Shadow)) {
-        // The walk would stop, black, at its first surface: any surface within its first
+        // A walk would stop, black, at its first surface: any surface within its first
         // query's reach decides, and an occlusion test finds one sooner than the nearest.
         double t_max;
-        if (all.next_query(t_max) &&
-            geometry.occluded(Ray{point, dir}, kShadowTolerance, t_max, Query::Shadow))
-            return glm::dvec3(0);
-        return all.filter();
+        if (!next_reach(distance, t_max)) return glm::dvec3(1);
+        ++counters.shadow_rays;
+        const bool blocked =
+            geometry.occluded(Ray{point, dir}, kShadowTolerance, t_max, Query::Shadow, occluder);
+        return glm::dvec3(blocked ? 0.0 : 1.0);
     }
+    ShadowWalk all(point, dir, distance, interiors, counters, nullptr, refracted);
     step_through(geometry, Query::Shadow, point, all);
     if (solid_length) *solid_length = all.solid_length();
     return all.filter();

@@ -23,10 +23,12 @@ bool clear_for_shadows(const scene::Interior* interior);
 // skipped as clear) and it receives how much of the way lies inside solid (non-hollow)
 // objects, where there is no fog. With `refracted` (the light's photon flags, where a photon
 // map lights the point), a photon target that refracts the light's photons blocks it all:
-// its caustic takes the place of the light it lets through (POV-Ray).
+// its caustic takes the place of the light it lets through (POV-Ray). `occluder`: the light's
+// cache of the object that last blocked its shadow rays (Intersector::occluded).
 glm::dvec3 shadow_filter(const Intersector& geometry, const glm::dvec3& point,
                          const glm::dvec3& dir, double distance, const InteriorList& interiors,
                          TraceCounters& counters, double* solid_length = nullptr,
-                         const scene::LightPhotons* refracted = nullptr);
+                         const scene::LightPhotons* refracted = nullptr,
+                         Occluder* occluder = nullptr);
 
 }  // namespace lumen::render

@@ -350,29 +350,41 @@ TEST(ShadowFilter, OpaqueScenesTestForAnySurfaceNotTheNearest) {
     const Stepping walking(geometry, Intersector::Listing::Never);  // never takes the shortcut
     ASSERT_FALSE(walking.opaque_only(Query::Shadow));
 
-    int blocked = 0, open = 0;
+    int blocked = 0, open = 0, hinted = 0;
+    // Each query keeps its last occluder, as a light does; junk names nothing.
+    Occluder last_shadow, last[2], junk{123456};
     for (int i = 0; i < 4000; ++i) {
         const glm::dvec3 from{u(rng), u(rng), u(rng)};
         const glm::dvec3 to{u(rng) * 3, i % 2 ? 8 : -8, u(rng) * 3};
         const glm::dvec3 dir = glm::normalize(to - from);
         const double distance = glm::length(to - from);
-        TraceCounters a, b;
+        TraceCounters a, b, c;
         const glm::dvec3 fa = shadow_filter(geometry, from, dir, distance, {}, a);
         const glm::dvec3 fb = shadow_filter(walking, from, dir, distance, {}, b);
+        const glm::dvec3 fc =
+            shadow_filter(geometry, from, dir, distance, {}, c, nullptr, nullptr, &last_shadow);
         ASSERT_EQ(fa, fb) << i;
+        ASSERT_EQ(fa, fc) << i;
         EXPECT_EQ(a.shadow_rays, b.shadow_rays) << i;
+        EXPECT_EQ(a.shadow_rays, c.shadow_rays) << i;
         (fa == glm::dvec3(0) ? blocked : open) += 1;
-        // occluded() finds a surface exactly where the nearest-hit query does.
+        hinted += last_shadow.root != Occluder{}.root;
+        // occluded() finds a surface exactly where the nearest-hit query does, whatever
+        // object its hint names.
         for (Query q : {Query::All, Query::Shadow}) {
             Hit hit;
             const Ray ray{from, dir};
-            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q),
-                      geometry.intersect(ray, 1e-3, distance, hit, q))
-                << i;
+            const bool nearest = geometry.intersect(ray, 1e-3, distance, hit, q);
+            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q), nearest) << i;
+            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q, &last[int(q)]), nearest) << i;
+            Occluder stale{uint32_t(i % 16)};  // any root, seen by q or not
+            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q, &stale), nearest) << i;
+            EXPECT_EQ(geometry.occluded(ray, 1e-3, distance, q, &junk), nearest) << i;
         }
     }
     EXPECT_GT(blocked, 1000);
     EXPECT_GT(open, 500);
+    EXPECT_GT(hinted, 3000);  // set by the first blocked ray on
 
     // One surface that may let light through, anywhere in a CSG, ends the shortcut.
     std::vector<scene::ObjectPtr> with_glass = objects;

@@ -4,10 +4,11 @@
 #include <bit>
 #include <cstdint>
 #include <memory>
-#include <random>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "render/intersector.hpp"
 
 namespace lumen::render {
 
@@ -15,12 +16,43 @@ struct TraceCounters {
     uint64_t rays = 0, shadow_rays = 0;
 };
 
+// std::minstd_rand read through std::uniform_real_distribution<double>(0, 1), number for
+// number (libstdc++ makes each double of two draws, low then high), with the two draws made
+// from the one state (a^2 x mod m for the second) so that neither waits on the other: area
+// lights draw two numbers a shadow ray, and the chained draws cost a sixth of a jittered render.
+class UniformSource {
+public:
+    explicit UniformSource(uint32_t seed) { this->seed(seed); }
+    void seed(uint32_t s) {
+        x_ = s % kM;
+        if (x_ == 0) x_ = 1;  // as minstd_rand seeds
+    }
+    double operator()() {
+        constexpr double r = double(kM - 1);  // the values a draw takes: 1 .. m - 1
+        const uint64_t low = kA * x_ % kM, high = kA2 * x_ % kM;
+        x_ = high;
+        const double u = (double(low - 1) + double(high - 1) * r) / (r * r);
+        return u < 1 ? u : 0x1.fffffffffffffp-1;  // the largest double below 1
+    }
+
+private:
+    static constexpr uint64_t kM = 2147483647, kA = 48271, kA2 = kA * kA % kM;
+    uint64_t x_;
+};
+
 struct ThreadState {
     TraceCounters counters;
-    std::minstd_rand rng{12345};
+    UniformSource rng{12345};
     // Area-light grid cache (one slot per sample; `valid` marks filled slots).
     std::vector<glm::dvec3> area_filter;
     std::vector<unsigned char> area_valid;
+    // Per light, by its place in the render's list: the object that last blocked its shadow
+    // rays on this thread, tested first by the next one.
+    std::vector<Occluder> occluders;
+    Occluder* occluder(size_t light) {
+        if (light >= occluders.size()) occluders.resize(light + 1);
+        return &occluders[light];
+    }
 
     // The render block this thread is on (BlockRenderer counts them). Scratch that an
     // IndirectLight keeps per block (radiosity's point-gather caches) is tagged with it, so a
@@ -31,7 +63,7 @@ struct ThreadState {
     const void* block_scratch_owner = nullptr;
     uint64_t block_scratch_block = 0;
 
-    double uniform() { return std::uniform_real_distribution<double>(0.0, 1.0)(rng); }
+    double uniform() { return rng(); }
 
     // Restarts the random source from a camera sample's position, so that what a sample draws
     // does not depend on which thread renders it, or on which pixels came before it (a partial
@@ -43,7 +75,7 @@ struct ThreadState {
         h ^= h >> 27;
         h *= 0x94d049bb133111ebULL;
         h ^= h >> 31;
-        rng.seed(uint32_t(1 + h % 2147483646u));  // minstd's seeds: 1 .. 2^31 - 2
+        rng.seed(uint32_t(1 + h % 2147483646u));  // seeds 1 .. 2^31 - 2
     }
 };
 
