@@ -65,9 +65,10 @@ double refine_root(const double* c, int n, double a, double b, double fa) {
 
 }  // namespace
 
-int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots) {
+int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots,
+                        int max_roots) {
     while (n > 0 && c[n] == 0) --n;  // drop vanishing leading terms
-    if (n <= 0 || !(lo <= hi)) return 0;
+    if (n <= 0 || !(lo <= hi) || max_roots <= 0) return 0;
     if (n == 1) {
         double t = -c[0] / c[1];
         if (t >= lo && t <= hi) { roots[0] = t; return 1; }
@@ -76,7 +77,7 @@ int solve_polynomial_in(const double* c, int n, double lo, double hi, double* ro
     if (n == 2) {
         double r[2];
         int k = solve_quadratic(c[2], 0.5 * c[1], c[0], r), m = 0;
-        for (int i = 0; i < k; ++i)
+        for (int i = 0; i < k && m < max_roots; ++i)
             if (r[i] >= lo && r[i] <= hi) roots[m++] = r[i];
         return m;
     }
@@ -94,7 +95,7 @@ int solve_polynomial_in(const double* c, int n, double lo, double hi, double* ro
     int m = 0;
     double fa = eval_poly(c, n, pts[0]);
     if (fa == 0) roots[m++] = pts[0];
-    for (int i = 1; i < np; ++i) {
+    for (int i = 1; i < np && m < max_roots; ++i) {
         double fb = eval_poly(c, n, pts[i]);
         if (fb == 0) {
             roots[m++] = pts[i];

@@ -14,8 +14,10 @@ double eval_poly(const double* c, int n, double t);
 // ascending. Roots are isolated between the roots of the derivative (found recursively), so
 // each bracket is monotone and is refined by safeguarded Newton; this never misses a simple
 // root and never returns NaN. A tangent (double) root counts only if the polynomial is 0 or
-// changes sign there. Returns the count (<= n).
-int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots);
+// changes sign there. Returns the count (<= n). With `max_roots`, only the lowest that many
+// (a ray's nearest hit needs one): the same values, the later brackets left unrefined.
+int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots,
+                        int max_roots = 8);
 
 // The degree of c (lowest power first) once the leading coefficients below `tiny` in
 // magnitude are dropped, as POV-Ray's polynomial solver drops them (an absolute test, so a

@@ -72,6 +72,38 @@ TEST(Polynomial, DoubleRootNeverGivesNaN) {
 }
 
 // Every sign change seen by a dense brute-force scan must match a returned root.
+// A nearest hit asks for the lowest roots only: they are the full solve's, to the bit.
+TEST(Polynomial, TheLowestRootsAloneAreTheFullSolvesFirst) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> root(-3, 3), coefficient(-2, 2);
+    int several = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // Quartics through four chosen roots (many roots in range), and random ones.
+        double c[5];
+        if (i % 2) {
+            const double r[4] = {root(rng), root(rng), root(rng), root(rng)};
+            double p[5] = {1, 0, 0, 0, 0};  // (t - r0)(t - r1)..., lowest power first
+            for (int k = 0; k < 4; ++k) {
+                for (int j = k + 1; j > 0; --j) p[j] = p[j - 1] - r[k] * p[j];
+                p[0] *= -r[k];
+            }
+            std::copy(p, p + 5, c);
+        } else {
+            for (double& v : c) v = coefficient(rng);
+        }
+        const double lo = -2.5, hi = 2.8;
+        double all[8], first[8];
+        const int n = solve_polynomial_in(c, 4, lo, hi, all);
+        for (int max : {1, 2, 3}) {
+            const int m = solve_polynomial_in(c, 4, lo, hi, first, max);
+            ASSERT_EQ(m, std::min(n, max)) << i;
+            for (int k = 0; k < m; ++k) ASSERT_EQ(first[k], all[k]) << i << " root " << k;
+        }
+        several += n >= 2;
+    }
+    EXPECT_GT(several, 4000);
+}
+
 TEST(Polynomial, AgreesWithBruteForceScan) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> coef(-10, 10);

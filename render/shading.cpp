@@ -159,9 +159,13 @@ glm::dvec3 shadow_for(const LightSource& l, const SurfaceSample& s, const LightS
 }
 
 // Whether lights can add anything to the surface: a clear surface without highlights (a media
-// container's, typically) sends no shadow rays, which would cost a walk through its media each.
-bool takes_light(const scene::Finish& f, double opacity) {
-    const bool diffuse = (f.diffuse > 0 || f.diffuse_back > 0) && (opacity > 0 || f.crand > 0);
+// container's, typically) sends no shadow rays, which would cost a walk through its media each,
+// nor does a black one without highlights (a mirror's, typically, met again on every bounce):
+// diffuse light is the pigment's colour times the light's. With crand they are still sent, as
+// crand draws a number for each light that reaches the surface.
+bool takes_light(const scene::Finish& f, double opacity, const glm::dvec3& colour) {
+    const bool diffuse = (f.diffuse > 0 || f.diffuse_back > 0) &&
+                         ((opacity > 0 && colour != glm::dvec3(0)) || f.crand > 0);
     return diffuse || f.phong > 0 || f.specular > 0;
 }
 
@@ -235,7 +239,7 @@ glm::dvec3 local_light(const SurfaceSample& s, const LightingEnv& env,
     glm::dvec3 out(0);
     if (!env.ambient_off) out += s.colour * f.ambient * env.ambient_light * s.opacity;
     out += s.colour * f.emission * s.opacity;
-    if (!env.lights || !takes_light(f, s.opacity)) return out;
+    if (!env.lights || !takes_light(f, s.opacity, s.colour)) return out;
     for (const LightSource& l : *env.lights) {
         LightSample ls;
         if (!lights_surface(l, s.light_group, s.global_lights) || !illuminate(l, s.point, ls)) continue;

@@ -139,6 +139,41 @@ TEST(Shading, ASurfaceWithoutDiffuseOrHighlightsSendsNoShadowRays) {
     EXPECT_EQ(state.counters.shadow_rays, 1u);
 }
 
+// A black surface without highlights (a mirror's) sends none either: its diffuse light is
+// black whatever the shadow. With a highlight, a colour or crand (which draws a number for
+// each light that reaches it) it does.
+TEST(Shading, ABlackSurfaceWithoutHighlightsSendsNoShadowRays) {
+    scene::Light sl;
+    sl.position = {0, 0, -10};
+    const std::vector<LightSource> lights = prepare_lights({sl});
+    const Geometry g(std::vector<scene::ObjectPtr>{});
+    LightingEnv env;
+    env.lights = &lights;
+    env.geometry = &g;
+    scene::Finish f;
+    f.ambient = glm::dvec3(0.1);
+    f.diffuse = 0.6;
+    SurfaceSample s = facing_light(f);
+    s.colour = glm::dvec3(0);
+    ThreadState state;
+    EXPECT_EQ(local_light(s, env, InteriorList{}, state), glm::dvec3(0));
+    EXPECT_EQ(state.counters.shadow_rays, 0u);
+    s.colour = {0, 0, 0.5};
+    EXPECT_NEAR(local_light(s, env, InteriorList{}, state).z, 0.05 + 0.3, 1e-12);
+    EXPECT_EQ(state.counters.shadow_rays, 1u);
+    s.colour = glm::dvec3(0);
+    f.phong = 1;
+    EXPECT_NEAR(local_light(s, env, InteriorList{}, state).x, 1, 1e-12);  // the highlight's peak
+    EXPECT_EQ(state.counters.shadow_rays, 2u);
+    f.phong = 0;
+    f.crand = 0.2;
+    ThreadState reference = state;
+    local_light(s, env, InteriorList{}, state);
+    EXPECT_EQ(state.counters.shadow_rays, 3u);
+    reference.uniform();  // the one draw crand made
+    EXPECT_EQ(state.uniform(), reference.uniform());
+}
+
 TEST(Lights, ProjectedThroughPassesOnlyAlongSegmentsCrossingTheObject) {
     scene::Light l;
     l.position = {0, 10, 0};
