@@ -117,16 +117,27 @@ TEST(Shading, IridMultipliesTheLightForDiffuseAndHighlightsButNotAmbient) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(lit[c], 0.2 + (0.25 + 0.3) * k[c], 1e-12);
 }
 
+// A light straight ahead of facing_light()'s surface, in an empty scene for its shadow rays.
+struct LightAhead {
+    static std::vector<LightSource> light() {
+        scene::Light sl;
+        sl.position = {0, 0, -10};
+        return prepare_lights({sl});
+    }
+    const std::vector<LightSource> lights = light();
+    const Geometry geometry{std::vector<scene::ObjectPtr>{}};
+    LightingEnv env;
+    LightAhead() {
+        env.lights = &lights;
+        env.geometry = &geometry;
+    }
+};
+
 // A surface lights cannot add to (no diffuse, no highlights: a media container's clear skin)
 // sends no shadow rays; one with diffuse does. Each would walk through the container's media.
 TEST(Shading, ASurfaceWithoutDiffuseOrHighlightsSendsNoShadowRays) {
-    scene::Light sl;
-    sl.position = {0, 0, -10};
-    const std::vector<LightSource> lights = prepare_lights({sl});
-    const Geometry g(std::vector<scene::ObjectPtr>{});
-    LightingEnv env;
-    env.lights = &lights;
-    env.geometry = &g;
+    const LightAhead ahead;
+    const LightingEnv& env = ahead.env;
     scene::Finish f;
     f.ambient = glm::dvec3(0);
     f.diffuse = 0;
@@ -143,13 +154,8 @@ TEST(Shading, ASurfaceWithoutDiffuseOrHighlightsSendsNoShadowRays) {
 // black whatever the shadow. With a highlight, a colour or crand (which draws a number for
 // each light that reaches it) it does.
 TEST(Shading, ABlackSurfaceWithoutHighlightsSendsNoShadowRays) {
-    scene::Light sl;
-    sl.position = {0, 0, -10};
-    const std::vector<LightSource> lights = prepare_lights({sl});
-    const Geometry g(std::vector<scene::ObjectPtr>{});
-    LightingEnv env;
-    env.lights = &lights;
-    env.geometry = &g;
+    const LightAhead ahead;
+    const LightingEnv& env = ahead.env;
     scene::Finish f;
     f.ambient = glm::dvec3(0.1);
     f.diffuse = 0.6;
