@@ -18,8 +18,8 @@ struct TraceCounters {
 
 // std::minstd_rand read through std::uniform_real_distribution<double>(0, 1), number for
 // number (libstdc++ makes each double of two draws, low then high), with the two draws made
-// from the one state (a^2 x mod m for the second) so that neither waits on the other: area
-// lights draw two numbers a shadow ray, and the chained draws cost a sixth of a jittered render.
+// from the one state (a^2 x mod m for the second) so that neither waits on the other: a
+// jittered area light draws two numbers for each of its shadow rays.
 class UniformSource {
 public:
     explicit UniformSource(uint32_t seed) { this->seed(seed); }
