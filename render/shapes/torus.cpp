@@ -78,17 +78,19 @@ bool intersect(const TorusShape& s, const LocalRay& r, double tmin, double tmax,
     double c[5] = {e * e - 4 * R2 * pxz, 4 * f * e - 8 * R2 * pdxz,
                    4 * f * f + 2 * e - 4 * R2 * dxz, 4 * f, 1};
     double roots[4];
-    // The nearest root is nearly always the hit; the others are found only where it is not
-    // (rounded onto tmin or tmax).
-    int n = solve_polynomial_in(c, 4, k_lo - k_in, k_hi - k_in, roots, 1);
+    const double lo = k_lo - k_in, hi = k_hi - k_in;
+    const auto distance = [&](double root) { return (root + k_in) / len; };
     const auto in_range = [&](double root) {
-        const double t = (root + k_in) / len;
+        const double t = distance(root);
         return t > tmin && t < tmax;
     };
-    if (n == 1 && !in_range(roots[0])) n = solve_polynomial_in(c, 4, k_lo - k_in, k_hi - k_in, roots);
+    // The nearest root is nearly always the hit; the others are found only where it is not
+    // (rounded onto tmin or tmax).
+    int n = solve_polynomial_in(c, 4, lo, hi, roots, 1);
+    if (n == 1 && !in_range(roots[0])) n = solve_polynomial_in(c, 4, lo, hi, roots);
     for (int i = 0; i < n; ++i) {
         if (!in_range(roots[i])) continue;
-        const double t = (roots[i] + k_in) / len;
+        const double t = distance(roots[i]);
         glm::dvec3 q = r.at(t);
         // Gradient of (|q|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2), halved and divided by 2.
         double g = glm::dot(q, q) + R2 - s.minor * s.minor;
