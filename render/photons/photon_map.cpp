@@ -99,73 +99,90 @@ void PhotonMap::subdivide(int start, int end) {
 
 namespace {
 
+// The nearest-photon search of one gather: the kd-tree walked depth first, the side of each
+// split that holds p first, and the other side afterwards if its split plane is then within
+// reach (POV-Ray's order, which decides the result once the heap is full). Deferred sides
+// wait on a stack rather than in recursive calls, and the kept photons form a max-heap on the
+// distance in two parallel arrays.
 struct Gather {
-    const std::vector<Photon>& photons;
+    const Photon* photons;
     glm::dvec3 p, n;
     bool flatten;
     int max;
     double dmax;
-    GatheredPhotons& out;
+    double* keys;
+    const Photon** items;
+    int count = 0;
 
     void add(const Photon* ph, double d) {
-        auto& keys = out.distances;
-        auto& items = out.photons;
-        // A max-heap on the distance, kept in the two parallel arrays.
-        auto sift_up = [&](size_t i) {
+        if (count < max) {  // sift up from the new last place
+            int i = count++;
             while (i > 0) {
-                const size_t parent = (i - 1) / 2;
-                if (keys[parent] >= keys[i]) break;
-                std::swap(keys[parent], keys[i]);
-                std::swap(items[parent], items[i]);
+                const int parent = (i - 1) / 2;
+                if (keys[parent] >= d) break;
+                keys[i] = keys[parent];
+                items[i] = items[parent];
                 i = parent;
             }
-        };
-        if (int(items.size()) < max) {
-            keys.push_back(d);
-            items.push_back(ph);
-            sift_up(items.size() - 1);
+            keys[i] = d;
+            items[i] = ph;
             return;
         }
         // Full: the farthest kept photon makes way, and the reach shrinks to the new farthest.
         // The first time, the candidate was only compared with the start radius (POV-Ray's
         // quirk), so it may be farther than the photon it replaces.
-        keys[0] = d;
-        items[0] = ph;
-        size_t i = 0;
+        int i = 0;
         for (;;) {
-            const size_t l = 2 * i + 1, r = l + 1;
-            size_t big = i;
-            if (l < keys.size() && keys[l] > keys[big]) big = l;
-            if (r < keys.size() && keys[r] > keys[big]) big = r;
+            const int l = 2 * i + 1, r = l + 1;
+            int big = i;
+            double big_key = d;
+            if (l < count && keys[l] > big_key) big = l, big_key = keys[l];
+            if (r < count && keys[r] > big_key) big = r, big_key = keys[r];
             if (big == i) break;
-            std::swap(keys[big], keys[i]);
-            std::swap(items[big], items[i]);
+            keys[i] = keys[big];
+            items[i] = items[big];
             i = big;
         }
+        keys[i] = d;
+        items[i] = ph;
         dmax = keys[0];
     }
 
-    void visit(int start, int end) {
-        while (start <= end) {
-            const int mid = (start + end) >> 1;
-            const Photon& ph = photons[mid];
-            const glm::dvec3 v(ph.position[0] - p.x, ph.position[1] - p.y, ph.position[2] - p.z);
-            double d = glm::dot(v, v);
-            if (flatten) d *= 1 + kFlatten * std::fabs(glm::dot(n, v));
-            if (d < dmax) add(&ph, d);
-            const int axis = ph.axis;
-            const double delta = p[axis] - ph.position[axis];
-            const double sq = delta * delta;
-            // The side p lies on first; the other only if the split plane is within reach.
-            if (delta < 0) {
-                if (mid - 1 >= start) visit(start, mid - 1);
-                if (!(sq < dmax)) return;
-                start = mid + 1;
-            } else {
-                if (end >= mid + 1) visit(mid + 1, end);
-                if (!(sq < dmax)) return;
-                end = mid - 1;
+    void run(int size) {
+        struct Deferred {
+            int start, end;
+            double sq;  // the squared distance from p to the split plane
+        };
+        Deferred stack[64];  // one per level of the tree at most
+        int top = 0;
+        int start = 0, end = size - 1;
+        for (;;) {
+            while (start <= end) {
+                const int mid = (start + end) >> 1;
+                const Photon& ph = photons[mid];
+                const double vx = ph.position[0] - p.x, vy = ph.position[1] - p.y,
+                             vz = ph.position[2] - p.z;
+                double d = vx * vx + vy * vy + vz * vz;
+                // Flattening only lengthens the distance, so a photon out of reach stays out.
+                if (d < dmax) {
+                    if (flatten) d *= 1 + kFlatten * std::fabs(n.x * vx + n.y * vy + n.z * vz);
+                    if (d < dmax) add(&ph, d);
+                }
+                const double delta = p[ph.axis] - ph.position[ph.axis];
+                // Chosen without branches: which side p lies on is a coin toss per node.
+                const bool below = delta < 0;
+                const int far_start = below ? mid + 1 : start, far_end = below ? end : mid - 1;
+                stack[top] = {far_start, far_end, delta * delta};
+                top += far_start <= far_end;
+                start = below ? start : mid + 1;
+                end = below ? mid - 1 : end;
             }
+            do {
+                if (top == 0) return;
+                --top;
+            } while (!(stack[top].sq < dmax));
+            start = stack[top].start;
+            end = stack[top].end;
         }
     }
 };
@@ -174,10 +191,13 @@ struct Gather {
 
 void PhotonMap::gather(const glm::dvec3& p, const glm::dvec3& normal, double radius, int max,
                        GatheredPhotons& out) const {
-    out.photons.clear();
-    out.distances.clear();
-    Gather g{photons_, p, normal, normal != glm::dvec3(0), max, radius * radius, out};
-    if (max > 0 && !photons_.empty()) g.visit(0, int(photons_.size()) - 1);
+    out.photons.resize(std::max(max, 0));
+    out.distances.resize(out.photons.size());
+    Gather g{photons_.data(), p, normal, normal != glm::dvec3(0), max, radius * radius,
+             out.distances.data(), out.photons.data()};
+    if (max > 0 && !photons_.empty()) g.run(int(photons_.size()));
+    out.photons.resize(g.count);
+    out.distances.resize(g.count);
     out.radius_sq = g.dmax;
 }
 

@@ -130,6 +130,82 @@ TEST(PhotonMap, AdaptiveGatherWidensWhereTooFewWereFound) {
     EXPECT_GE(g.count(), 20);
 }
 
+// POV-Ray's gather as it describes it, recursively: the photon at the middle of the range,
+// the half p lies in, then the other half if its split plane is still within reach; a photon
+// joins a max-heap of at most `max` when nearer than the reach, which shrinks to the heap's
+// farthest once a photon has replaced one. The result depends on this order once the heap
+// fills, so lumen's gather must visit in it.
+struct ReferenceGather {
+    const std::vector<Photon>& photons;
+    glm::dvec3 p, n;
+    int max;
+    double reach;
+    std::vector<double> keys;
+    std::vector<const Photon*> items;
+
+    void add(const Photon* ph, double d) {
+        if (int(keys.size()) < max) {
+            keys.push_back(d), items.push_back(ph);
+            for (size_t i = keys.size() - 1; i > 0 && keys[(i - 1) / 2] < keys[i]; i = (i - 1) / 2)
+                std::swap(keys[i], keys[(i - 1) / 2]), std::swap(items[i], items[(i - 1) / 2]);
+            return;
+        }
+        keys[0] = d, items[0] = ph;
+        for (size_t i = 0;;) {
+            size_t big = i;
+            for (size_t c : {2 * i + 1, 2 * i + 2})
+                if (c < keys.size() && keys[c] > keys[big]) big = c;
+            if (big == i) break;
+            std::swap(keys[i], keys[big]), std::swap(items[i], items[big]);
+            i = big;
+        }
+        reach = keys[0];
+    }
+    void visit(int start, int end) {
+        if (start > end) return;
+        const int mid = (start + end) / 2;
+        const Photon& ph = photons[mid];
+        const glm::dvec3 v = at(ph) - p;
+        double d = glm::dot(v, v);
+        if (n != glm::dvec3(0)) d *= 1 + 16 * std::fabs(glm::dot(n, v));
+        if (d < reach) add(&ph, d);
+        const double delta = p[ph.axis] - ph.position[ph.axis];
+        const bool below = delta < 0;
+        visit(below ? start : mid + 1, below ? mid - 1 : end);
+        if (delta * delta < reach) visit(below ? mid + 1 : start, below ? end : mid - 1);
+    }
+};
+
+TEST(PhotonMap, GatherVisitsInPovRaysOrder) {
+    // Photons on a wavy sheet and in a cloud; gathers with and without a normal, some filling
+    // the heap (max 30) and some not: the same photons in the same heap order, the same reach.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<glm::dvec3> points = random_points(2000, 12);
+    for (int i = 0; i < 6000; ++i) {
+        const double x = u(rng), z = u(rng);
+        points.push_back({x, 0.1 * std::sin(5 * x) * std::cos(3 * z), z});
+    }
+    const PhotonMap map = map_of(points);
+    GatheredPhotons g;
+    int full = 0;
+    for (int i = 0; i < 400; ++i) {
+        const glm::dvec3 q(u(rng), 0.2 * u(rng), u(rng));
+        const glm::dvec3 n = i % 2 ? glm::normalize(glm::dvec3(0.1 * u(rng), 1, 0.1 * u(rng)))
+                                   : glm::dvec3(0);
+        const double radius = 0.02 + 0.2 * (u(rng) + 1);
+        ReferenceGather ref{map.photons(), q, n, 30, radius * radius, {}, {}};
+        ref.visit(0, int(map.size()) - 1);
+        map.gather(q, n, radius, 30, g);
+        ASSERT_EQ(g.photons, ref.items);
+        ASSERT_EQ(g.distances, ref.keys);
+        ASSERT_EQ(g.radius_sq, ref.reach);
+        full += g.count() == 30;
+    }
+    EXPECT_GT(full, 100);
+    EXPECT_LT(full, 300);
+}
+
 TEST(PhotonMap, AutomaticRadiusGathersAboutMaxPhotons) {
     // A uniform layer of photons: the chosen radius should hold roughly gather Max of them
     // (POV-Ray's estimate, widened where densities vary).
