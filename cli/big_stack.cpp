@@ -4,6 +4,8 @@
 
 #include <exception>
 
+#include "base/heap_pages.hpp"
+
 namespace lumen::cli {
 namespace {
 
@@ -14,6 +16,7 @@ struct Job {
 
 void* thread_main(void* arg) {
     Job* job = static_cast<Job*>(arg);
+    back_thread_heap_with_huge_pages();
     try {
         (*job->work)();
     } catch (...) {
