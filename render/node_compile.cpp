@@ -17,6 +17,26 @@ Aabb padded(Aabb b) {
     return {b.lo - pad, b.hi + pad};
 }
 
+// A member of an intersection shows only where it lies inside every other member, so its box
+// is cut to the box of their insides (for a plane along an axis, its half-space); a quadric
+// without its transform gets the box of its own inside there. The rook's body, a cylinder
+// between two planes, is then a box the BVH can cull rather than a surface every ray meets.
+void fit_members(NodeStore& store, const std::vector<uint32_t>& kids) {
+    std::vector<Aabb> after(kids.size() + 1, Aabb::everything());  // members i.. together
+    for (size_t i = kids.size(); i-- > 0;)
+        after[i] = intersect(after[i + 1], store.nodes[kids[i]].solid);
+    Aabb before = Aabb::everything();  // members ..i-1 together
+    for (size_t i = 0; i < kids.size(); ++i) {
+        Node& member = store.nodes[kids[i]];
+        const Aabb others = intersect(before, after[i + 1]);
+        before = intersect(before, member.solid);
+        member.surface = intersect(member.surface, padded(others));
+        if (member.kind == NodeKind::Shape && member.identity && !member.inverse)
+            member.surface = intersect(
+                member.surface, padded(shape_bounds_within(store.shapes[member.shape], others)));
+    }
+}
+
 bool transform_is_finite(const scene::Transform& xf) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -154,23 +174,28 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         inner.flip = node.flip;
         inner.depth = ctx.depth + 1;
         std::vector<uint32_t> kids;
-        Aabb surface, solid = node.kind == NodeKind::Intersection ? Aabb::everything() : Aabb{};
+        std::vector<bool> bounds_overlap;  // counts in POV-Ray's overlap of member boxes
+        for (size_t i = 0; i < csg->children.size(); ++i) {
+            if (!csg->children[i]) continue;
+            inner.invert = csg->op == scene::CsgOp::Difference && i > 0;
+            kids.push_back(compile_object(store, *csg->children[i], inner, accelerate));
+            bounds_overlap.push_back(
+                !store.nodes[kids.back()].inverse &&
+                !std::holds_alternative<scene::HeightField>(csg->children[i]->shape));
+        }
+        if (node.kind == NodeKind::Intersection) fit_members(store, kids);
         // POV-Ray bounds an intersection by the overlap of its members' bounding boxes (the
         // subtracted ones and height fields left out): a ray that misses it misses the object,
         // one that meets it finds every crossing. A disc's box is flat though its inside is a
         // half-space.
+        Aabb surface, solid = node.kind == NodeKind::Intersection ? Aabb::everything() : Aabb{};
         Aabb overlap = Aabb::everything();
-        for (size_t i = 0; i < csg->children.size(); ++i) {
-            if (!csg->children[i]) continue;
-            inner.invert = csg->op == scene::CsgOp::Difference && i > 0;
-            uint32_t k = compile_object(store, *csg->children[i], inner, accelerate);
-            kids.push_back(k);
-            const Node& child = store.nodes[k];
+        for (size_t i = 0; i < kids.size(); ++i) {
+            const Node& child = store.nodes[kids[i]];
             surface.expand(child.surface);
             if (node.kind == NodeKind::Intersection) solid = intersect(solid, child.solid);
             else solid.expand(child.solid);
-            if (!child.inverse && !std::holds_alternative<scene::HeightField>(csg->children[i]->shape))
-                overlap = intersect(overlap, child.surface);
+            if (bounds_overlap[i]) overlap = intersect(overlap, child.surface);
         }
         if (node.kind == NodeKind::Intersection) surface = intersect(intersect(surface, solid), overlap);
         if (kids.empty()) solid = surface = Aabb{};

@@ -34,6 +34,18 @@ bool inside(const PlaneShape& s, const glm::dvec3& p) {
 
 Aabb bounds(const PlaneShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
 
+Aabb solid_bounds(const PlaneShape& s) {
+    Aabb box = bounds(s);
+    if (!s.valid) return box;
+    for (int a = 0; a < 3; ++a) {
+        if (s.normal[(a + 1) % 3] != 0 || s.normal[(a + 2) % 3] != 0) continue;
+        // Inside is n·p < d (within the 1e-10 inside() allows): one bound along this axis.
+        if (s.normal[a] > 0) box.hi[a] = s.distance + 1e-10;
+        else box.lo[a] = -s.distance - 1e-10;
+    }
+    return box;
+}
+
 // Any affine map keeps a plane a plane.
 bool ShapeTraits<scene::Plane>::bake(const scene::Plane& p, const scene::Transform& xf,
                                      PlaneShape& out) {

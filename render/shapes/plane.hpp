@@ -9,7 +9,8 @@ PlaneShape make_plane(const scene::Plane& p);
 bool intersect(const PlaneShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
 bool inside(const PlaneShape& s, const glm::dvec3& p);
 Aabb bounds(const PlaneShape& s);
-inline Aabb solid_bounds(const PlaneShape& s) { return bounds(s); }
+// The half-space's box: bounded on one side where the normal lies along an axis, else infinite.
+Aabb solid_bounds(const PlaneShape& s);
 
 template <> struct ShapeTraits<scene::Plane> : PreparedBy<scene::Plane, PlaneShape, make_plane> {
     static bool bake(const scene::Plane& p, const scene::Transform& xf, PlaneShape& out);

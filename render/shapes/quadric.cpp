@@ -1,5 +1,6 @@
 // quadric: POV-Ray's closed form (a tangent ray, discriminant <= 0, misses; no quadratic term
 // leaves the linear root), hits in (1e-6, 1e7).
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -98,8 +99,44 @@ bool inside(const QuadricShape& s, const glm::dvec3& p) {
            0;
 }
 
-// Unbounded: POV-Ray bounds only some axis-aligned forms, which changes no image.
-Aabb bounds(const QuadricShape& s) { return s.valid ? Aabb::everything() : Aabb{}; }
+Aabb bounds(const QuadricShape& s) { return s.valid ? bounds_within(s, Aabb::everything()) : Aabb{}; }
+
+Aabb bounds_within(const QuadricShape& s, const Aabb& clip) {
+    if (!s.valid || clip.empty()) return {};
+    if (s.mixed != glm::dvec3(0)) return clip;
+    constexpr double inf = Aabb::inf;
+    // f = sum over axes of (A x + G) x, plus J. The least axis i's term takes in the clip box
+    // (-inf where it falls without bound).
+    auto term = [&](int i, double x) { return (s.square[i] * x + s.linear[i]) * x; };
+    auto least = [&](int i) {
+        const double A = s.square[i], G = s.linear[i], lo = clip.lo[i], hi = clip.hi[i];
+        if (A > 0) return term(i, std::clamp(-G / (2 * A), lo, hi));
+        if (A < 0) return std::isfinite(lo) && std::isfinite(hi) ? std::min(term(i, lo), term(i, hi)) : -inf;
+        if (G > 0) return std::isfinite(lo) ? G * lo : -inf;
+        if (G < 0) return std::isfinite(hi) ? G * hi : -inf;
+        return 0.0;
+    };
+    const double floor[3] = {least(0), least(1), least(2)};
+    Aabb out = clip;
+    for (int j = 0; j < 3; ++j) {
+        // Inside needs term_j(x) <= room.
+        const double room = -s.constant - floor[(j + 1) % 3] - floor[(j + 2) % 3];
+        if (!std::isfinite(room)) continue;
+        const double A = s.square[j], G = s.linear[j];
+        if (A > 0) {  // A (x - v)^2 <= room + A v^2
+            const double v = -G / (2 * A);
+            const double half = std::sqrt(std::max(0.0, room / A + v * v));
+            const double margin = 1e-6 * (1 + std::fabs(v) + half);
+            out.lo[j] = std::max(out.lo[j], v - half - margin);
+            out.hi[j] = std::min(out.hi[j], v + half + margin);
+        } else if (A == 0 && G != 0) {  // G x <= room
+            const double x = room / G, margin = 1e-6 * (1 + std::fabs(x));
+            if (G > 0) out.hi[j] = std::min(out.hi[j], x + margin);
+            else out.lo[j] = std::max(out.lo[j], x - margin);
+        }
+    }
+    return out;
+}
 
 // f_world(w) = f(M^-1 w): S' = M^-T S M^-1, exact for any invertible affine map.
 bool ShapeTraits<scene::Quadric>::bake(const scene::Quadric& q, const scene::Transform& xf,

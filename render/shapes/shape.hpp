@@ -66,6 +66,11 @@ template <class S> bool inside(const std::unique_ptr<S>& s, const glm::dvec3& p)
 }
 template <class S> Aabb bounds(const std::unique_ptr<S>& s) { return bounds(*s); }
 template <class S> Aabb solid_bounds(const std::unique_ptr<S>& s) { return solid_bounds(*s); }
+// Where a shape's surface can be within `clip`: its box cut to it, unless the shape has a
+// tighter answer of its own (quadrics: render/shapes/quadric.hpp).
+template <class S> Aabb bounds_within(const S& s, const Aabb& clip) {
+    return intersect(bounds(s), clip);
+}
 
 template <class S>
 concept PreparedShape = requires(const S& s, const LocalRay& r, double t, ShapeHit& h,

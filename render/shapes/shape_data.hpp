@@ -30,6 +30,9 @@ inline Aabb shape_bounds(const ShapeData& d) {
 inline Aabb shape_solid_bounds(const ShapeData& d) {
     return std::visit([](const auto& s) { return solid_bounds(s); }, d);
 }
+inline Aabb shape_bounds_within(const ShapeData& d, const Aabb& clip) {
+    return std::visit([&](const auto& s) { return bounds_within(s, clip); }, d);
+}
 
 // The prepared shape of a primitive; false for CSG and unsupported shapes.
 bool prepare_shape(const scene::Shape& shape, bool accelerate, ShapeData& out);
