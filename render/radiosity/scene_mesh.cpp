@@ -337,29 +337,95 @@ long SceneMesh::find(const glm::dvec3& origin, const glm::dvec3& dir, double t, 
     return best;
 }
 
+namespace {
+
+// The elements of `tree` (over `ids`) whose box comes within `reach` of p along every axis.
+void elements_near(const Bvh& tree, const std::vector<uint32_t>& ids,
+                   const std::vector<Aabb>& boxes, const glm::dvec3& p, double reach,
+                   std::vector<uint32_t>& out) {
+    const std::vector<BvhNode>& nodes = tree.nodes();
+    if (nodes.empty()) return;
+    const Aabb probe{p - reach, p + reach};
+    auto meets = [&](const Aabb& b) {
+        return b.lo.x <= probe.hi.x && b.hi.x >= probe.lo.x && b.lo.y <= probe.hi.y &&
+               b.hi.y >= probe.lo.y && b.lo.z <= probe.hi.z && b.hi.z >= probe.lo.z;
+    };
+    uint32_t stack[Bvh::kMaxDepth + 4];
+    int sp = 0;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const BvhNode& n = nodes[stack[--sp]];
+        if (!meets(n.box)) continue;
+        if (n.count) {
+            for (uint32_t i = n.index, e = n.index + n.count; i < e; ++i) {
+                const uint32_t element = ids[tree.order()[i]];
+                if (meets(boxes[element])) out.push_back(element);
+            }
+        } else {
+            stack[sp++] = n.index;
+            stack[sp++] = uint32_t(&n - nodes.data()) + 1;
+        }
+    }
+}
+
+}  // namespace
+
 long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack,
                           glm::dvec3& bary) const {
+    const glm::ivec3 cell = cell_of(*this, p);
+    const size_t c = cell_index(*this, cell);
+    // The element whose plane is nearest p among those in the cell whose projection holds p
+    // (the last such in element order; the first at distance 0).
     long best = -1;
     double best_h = slack;
-    const size_t c = cell_index(*this, cell_of(*this, p));
-    for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-        if (cell_slots[k] != slot) continue;
-        const Frame& f = frames[cell_items[k]];
+    auto consider = [&](uint32_t element) {
+        const Frame& f = frames[element];
         const glm::dvec3 ap = p - f.a;
         const double along = glm::dot(ap, f.normal), h = std::fabs(along);
-        if (h > best_h || f.inv_det == 0) continue;
+        if (h > best_h || f.inv_det == 0) return false;
         const glm::dvec3 r = ap - along * f.normal;
         const double r1 = glm::dot(r, f.e1), r2 = glm::dot(r, f.e2);
         const double u = (f.d22 * r1 - f.d12 * r2) * f.inv_det,
                      w = (f.d11 * r2 - f.d12 * r1) * f.inv_det;
         constexpr double eps = 1e-6;
-        if (u < -eps || w < -eps || u + w > 1 + eps) continue;
+        if (u < -eps || w < -eps || u + w > 1 + eps) return false;
         const double uc = std::clamp(u, 0.0, 1.0), wc = std::clamp(w, 0.0, 1.0 - uc);
         bary = {1 - uc - wc, uc, wc};
-        best = long(cell_items[k]);
+        best = long(element);
         best_h = h;
-        if (h == 0) break;
+        return h == 0;
+    };
+    constexpr uint32_t kScanned = 64;  // cells this full are searched through the object's tree
+    if (cell_start[c + 1] - cell_start[c] <= kScanned || slot >= per_object.size()) {
+        for (uint32_t k = cell_start[c]; k < cell_start[c + 1]; ++k)
+            if (cell_slots[k] == slot && consider(cell_items[k])) break;
+        return best;
     }
+    // A dense mesh puts hundreds of an object's elements in a cell. An element whose
+    // projection holds p at plane distance h has its box within h of p (plus the projection
+    // test's tolerance), so the elements with boxes near p give a first answer h1, and those
+    // within h1 of p are all that can match or beat it: scanned in element order, as the
+    // cell lists them, they give the cell scan's answer.
+    const ObjectElements& own = per_object[slot];
+    const double tolerance = 1e-5 * patch_size;
+    thread_local std::vector<uint32_t> near;
+    auto scan_within = [&](double reach) {
+        near.clear();
+        elements_near(own.bvh, own.elements, boxes, p, reach, near);
+        std::sort(near.begin(), near.end());
+        best = -1;
+        best_h = slack;
+        for (uint32_t element : near) {
+            // Only elements listed in this cell: their box's cells include it.
+            const glm::ivec3 lo = cell_of(*this, boxes[element].lo),
+                             hi = cell_of(*this, boxes[element].hi);
+            if (glm::any(glm::lessThan(cell, lo)) || glm::any(glm::greaterThan(cell, hi))) continue;
+            if (consider(element)) break;
+        }
+    };
+    scan_within(tolerance);
+    const double h1 = best >= 0 ? best_h : slack;
+    scan_within(h1 + tolerance);
     return best;
 }
 
