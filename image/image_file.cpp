@@ -70,7 +70,7 @@ ImageFile read_image(const std::string& path, Format format) {
         case Format::Tga: return read_tga(path);
         case Format::Gif: return read_gif(path);
         case Format::Pot: return read_pot(path);
-        case Format::Jpeg:
+        case Format::Jpeg: return read_jpeg(path);
         case Format::Tiff:
         case Format::Bmp:
         case Format::Exr:

@@ -1,8 +1,8 @@
 // Image files as POV-Ray's image contexts (height_field, image_map, bump_map, image_pattern,
 // material_map) read them: the file's samples undecoded, with what the file says about its
 // encoding, so each caller applies POV-Ray's value rules itself (image/pov_storage.hpp).
-// PNG through libpng, PPM/PGM and TGA here, the rest through OpenImageIO, loaded only when
-// such a file is read (image/oiio_module.hpp).
+// PNG through libpng, JPEG through libjpeg, PPM/PGM, TGA and GIF here, the rest through
+// OpenImageIO, loaded only when such a file is read (image/oiio_module.hpp).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -66,7 +66,8 @@ ImageFile read_pnm(const std::string& path);  // P2, P3, P5, P6
 ImageFile read_tga(const std::string& path);
 ImageFile read_gif(const std::string& path);  // palette entries and indices
 ImageFile read_pot(const std::string& path);  // 16-bit grey heights
-ImageFile read_with_oiio(const std::string& path);  // JPEG, TIFF, BMP, EXR, HDR
+ImageFile read_jpeg(const std::string& path);  // grey and RGB; CMYK through OpenImageIO
+ImageFile read_with_oiio(const std::string& path);  // TIFF, BMP, EXR, HDR, CMYK JPEG
 
 // Throws ImageError unless width x height is a size lumen reads.
 void check_image_size(long long width, long long height);

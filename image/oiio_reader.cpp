@@ -1,5 +1,5 @@
-// The formats lumen has no reader of its own for (JPEG, GIF, TIFF, BMP, EXR, HDR), through the
-// OpenImageIO module. OIIO expands palettes, so GIF and BMP come back as RGB(A) colours.
+// The formats lumen has no reader of its own for (TIFF, BMP, EXR, HDR, CMYK JPEG), through the
+// OpenImageIO module. OIIO expands palettes, so BMP comes back as RGB(A) colours.
 #include "image/image_file.hpp"
 #include "image/oiio/lumen_oiio.h"
 #include "image/oiio_module.hpp"

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    tao-pegtl-dev libglm-dev libpng-dev libopenimageio-dev openimageio-tools libgtest-dev
+    tao-pegtl-dev libglm-dev libpng-dev libjpeg-dev libopenimageio-dev openimageio-tools libgtest-dev
     libfreetype-dev  # text: TrueType fonts
     libembree-dev  # big meshes trace through Embree's BVH (render/shapes/mesh_embree.hpp)
     cmake g++ make pkg-config
