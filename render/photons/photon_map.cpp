@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -65,7 +66,40 @@ glm::dvec3 Photon::direction() const {
 
 void PhotonMap::build() {
     if (!photons_.empty()) subdivide(0, int(photons_.size()) - 1);
+    bound_ranges();
 }
+
+void PhotonMap::bound_ranges() {
+    bounds_.clear();
+    if (!photons_.empty()) bound_range(0, int(photons_.size()) - 1, 1);
+}
+
+PhotonMap::Bounds PhotonMap::bound_range(int start, int end, size_t node) {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    Bounds b{{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}};
+    auto take = [&b](const Bounds& o) {
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] = std::min(b.lo[a], o.lo[a]);
+            b.hi[a] = std::max(b.hi[a], o.hi[a]);
+        }
+    };
+    if (end - start + 1 < kBoundedRange) {
+        for (int i = start; i <= end; ++i) {
+            const float* q = photons_[i].position;
+            take({{q[0], q[1], q[2]}, {q[0], q[1], q[2]}});
+        }
+        return b;
+    }
+    const int mid = (start + end) >> 1;
+    const float* q = photons_[mid].position;
+    take({{q[0], q[1], q[2]}, {q[0], q[1], q[2]}});
+    take(bound_range(start, mid - 1, 2 * node));
+    take(bound_range(mid + 1, end, 2 * node + 1));
+    if (bounds_.size() <= node) bounds_.resize(node + 1);
+    bounds_[node] = b;
+    return b;
+}
+
 
 // [start, end] inclusive, split at mid = (start + end) / 2 on the widest axis. A range of two
 // is left as it is (POV-Ray's quirk: its second photon may lie on the wrong side).
@@ -106,6 +140,7 @@ namespace {
 // distance in two parallel arrays.
 struct Gather {
     const Photon* photons;
+    const std::vector<PhotonMap::Bounds>& bounds;
     glm::dvec3 p, n;
     bool flatten;
     int max;
@@ -148,16 +183,36 @@ struct Gather {
         dmax = keys[0];
     }
 
+    // Whether a photon in the box could be kept: its squared distance from p, the least a
+    // photon's (flattened or not) can be, is under dmax. A margin far above rounding keeps
+    // every range that could hold a kept photon, so the gather is the same with or without it.
+    bool within_reach(const PhotonMap::Bounds& b) const {
+        double d = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double below = double(b.lo[a]) - p[a], above = p[a] - double(b.hi[a]);
+            const double gap = std::max({below, above, 0.0});
+            d += gap * gap;
+        }
+        return !(d > dmax * (1 + 1e-9));
+    }
+
     void run(int size) {
         struct Deferred {
             int start, end;
-            double sq;  // the squared distance from p to the split plane
+            size_t node;  // the range's number (PhotonMap::Bounds)
+            double sq;    // the squared distance from p to the split plane
         };
         Deferred stack[64];  // one per level of the tree at most
         int top = 0;
         int start = 0, end = size - 1;
+        size_t node = 1;
         for (;;) {
             while (start <= end) {
+                // A range whose box is out of reach holds no photon to keep (a gather above
+                // a floor of photons would otherwise walk every range near it in x and z).
+                if (end - start + 1 >= PhotonMap::kBoundedRange && node < bounds.size() &&
+                    !within_reach(bounds[node]))
+                    break;
                 const int mid = (start + end) >> 1;
                 const Photon& ph = photons[mid];
                 const double vx = ph.position[0] - p.x, vy = ph.position[1] - p.y,
@@ -172,10 +227,11 @@ struct Gather {
                 // Chosen without branches: which side p lies on is a coin toss per node.
                 const bool below = delta < 0;
                 const int far_start = below ? mid + 1 : start, far_end = below ? end : mid - 1;
-                stack[top] = {far_start, far_end, delta * delta};
+                stack[top] = {far_start, far_end, below ? 2 * node + 1 : 2 * node, delta * delta};
                 top += far_start <= far_end;
                 start = below ? start : mid + 1;
                 end = below ? mid - 1 : end;
+                node = below ? 2 * node : 2 * node + 1;
             }
             do {
                 if (top == 0) return;
@@ -183,6 +239,7 @@ struct Gather {
             } while (!(stack[top].sq < dmax));
             start = stack[top].start;
             end = stack[top].end;
+            node = stack[top].node;
         }
     }
 };
@@ -193,7 +250,7 @@ void PhotonMap::gather(const glm::dvec3& p, const glm::dvec3& normal, double rad
                        GatheredPhotons& out) const {
     out.photons.resize(std::max(max, 0));
     out.distances.resize(out.photons.size());
-    Gather g{photons_.data(), p, normal, normal != glm::dvec3(0), max, radius * radius,
+    Gather g{photons_.data(), bounds_, p, normal, normal != glm::dvec3(0), max, radius * radius,
              out.distances.data(), out.photons.data()};
     if (max > 0 && !photons_.empty()) g.run(int(photons_.size()));
     out.photons.resize(g.count);

@@ -53,7 +53,10 @@ public:
     // Takes an array build() left (a saved map) as the tree it is: building it again could
     // order ties otherwise, and the loaded map would gather differently from the saved one.
     // A damaged order gathers wrongly but safely (the tree is implicit in the index ranges).
-    void assign_built(std::vector<Photon> photons) { photons_ = std::move(photons); }
+    void assign_built(std::vector<Photon> photons) {
+        photons_ = std::move(photons);
+        bound_ranges();
+    }
     // POV's automatic start radius from the photon density around sample photons (`radius`
     // not given), times `multiplier`; deterministic. `volume`: a media map, whose density is
     // per volume (n over 4/3 πr³) and whose radius POV-Ray doubles.
@@ -68,9 +71,19 @@ public:
     void gather_adaptive(const glm::dvec3& p, const glm::dvec3& normal, const GatherSettings& s,
                          GatheredPhotons& out) const;
 
+    // A box around the photons of each range of the tree of at least kBoundedRange photons,
+    // by the range's number in heap order (the whole map 1, range k's halves 2k and 2k + 1).
+    struct Bounds {
+        float lo[3], hi[3];
+    };
+    static constexpr int kBoundedRange = 64;
+
 private:
     void subdivide(int start, int end);
+    void bound_ranges();
+    Bounds bound_range(int start, int end, size_t node);
     std::vector<Photon> photons_;
+    std::vector<Bounds> bounds_;
 };
 
 }  // namespace lumen::render
