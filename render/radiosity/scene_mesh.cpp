@@ -424,8 +424,9 @@ long SceneMesh::find_near(const glm::dvec3& p, uint32_t slot, double slack,
         }
     };
     scan_within(tolerance);
-    const double h1 = best >= 0 ? best_h : slack;
-    scan_within(h1 + tolerance);
+    // At distance 0 the second reach is the first's: the same elements, the same answer.
+    if (best >= 0 && best_h == 0) return best;
+    scan_within((best >= 0 ? best_h : slack) + tolerance);
     return best;
 }
 
