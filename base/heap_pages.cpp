@@ -9,24 +9,16 @@
 #endif
 
 #include "base/huge_pages.hpp"
+#include "base/sanitizers.hpp"
 
 #ifndef MADV_COLLAPSE
 #define MADV_COLLAPSE 25  // Linux 6.1; older kernels refuse it, which costs nothing
 #endif
 
 // Sanitizers bring their own allocator: glibc's arenas are not there to tune.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define LUMEN_TUNE_GLIBC_HEAP 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
-    __has_feature(memory_sanitizer)
-#define LUMEN_TUNE_GLIBC_HEAP 0
-#endif
-#endif
-#if !defined(LUMEN_TUNE_GLIBC_HEAP) && defined(__GLIBC__)
+#if defined(__GLIBC__) && !LUMEN_ASAN && !LUMEN_TSAN
 #define LUMEN_TUNE_GLIBC_HEAP 1
-#endif
-#ifndef LUMEN_TUNE_GLIBC_HEAP
+#else
 #define LUMEN_TUNE_GLIBC_HEAP 0
 #endif
 

@@ -9,15 +9,8 @@
 #include "base/diagnostics.hpp"
 #include "base/stop_request.hpp"
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LUMEN_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define LUMEN_ASAN 1
-#endif
-#ifdef LUMEN_ASAN
+#include "base/sanitizers.hpp"
+#if LUMEN_ASAN
 #include <sanitizer/allocator_interface.h>
 #endif
 
@@ -49,7 +42,7 @@ size_t default_max_memory() {
 }
 
 size_t Budget::heap_in_use() {
-#ifdef LUMEN_ASAN
+#if LUMEN_ASAN
     return __sanitizer_get_current_allocated_bytes();
 #else
     const struct mallinfo2 m = mallinfo2();

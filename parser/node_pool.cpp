@@ -4,18 +4,11 @@
 #include <new>
 
 #include "base/huge_pages.hpp"
+#include "base/sanitizers.hpp"
 #include "parser/ast.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define LUMEN_NODE_POOL 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LUMEN_NODE_POOL 0
-#endif
-#endif
-#ifndef LUMEN_NODE_POOL
-#define LUMEN_NODE_POOL 1
-#endif
+// AddressSanitizer builds keep nodes on the heap, where it checks them.
+#define LUMEN_NODE_POOL (!LUMEN_ASAN)
 
 namespace lumen::ast {
 namespace {

@@ -1,6 +1,8 @@
 // The node pool (node_pool.hpp): distinct slots, freed slots reused, safe from several threads.
 #include <gtest/gtest.h>
 
+#include "base/sanitizers.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -31,7 +33,7 @@ TEST(NodePool, SlotsAreDistinctAndHoldTheirNodes) {
 }
 
 TEST(NodePool, FreedSlotsAreReused) {
-#if defined(__SANITIZE_ADDRESS__)
+#if LUMEN_ASAN
     GTEST_SKIP() << "AddressSanitizer builds allocate nodes from the heap";
 #endif
     auto first = std::make_unique<Node>(Kind::Ident, SourceLoc{});
