@@ -47,7 +47,7 @@ double seconds_since(Clock::time_point t) {
 scene::Mesh grid_mesh(long triangles) {
     const int n = std::max(2, int(std::sqrt(double(triangles) / 2) + 0.5)), m = n + 1;
     scene::Mesh mesh;
-    mesh.vertices.reserve(size_t(m) * m);
+    mesh.vertices.edit().reserve(size_t(m) * m);
     for (int j = 0; j < m; ++j)
         for (int i = 0; i < m; ++i) {
             const double x = double(i) / n, z = double(j) / n;
@@ -55,7 +55,7 @@ scene::Mesh grid_mesh(long triangles) {
                              0.15 * std::sin(x * 5.0) * std::sin(z * 4.0);
             mesh.vertices.push_back({x, y, z});
         }
-    mesh.faces.reserve(size_t(2) * n * n);
+    mesh.faces.edit().reserve(size_t(2) * n * n);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const int a = j * m + i, b = a + 1, c = a + m, d = c + 1;

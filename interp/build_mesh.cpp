@@ -52,7 +52,7 @@ void index_uvs(ItemCursor& cur, scene::Mesh& mesh, const std::vector<std::array<
             cur.fail(cur.block_loc(), "uv_indices count differs from face_indices count");
         for (size_t i = 0; i < mesh.faces.size(); ++i) {
             check_range(cur, (*uv_indices)[i], mesh.uvs.size(), "uv", face_locs[i]);
-            mesh.faces[i].uv = (*uv_indices)[i];
+            mesh.faces.edit()[i].uv = (*uv_indices)[i];
         }
         return;
     }
@@ -61,7 +61,7 @@ void index_uvs(ItemCursor& cur, scene::Mesh& mesh, const std::vector<std::array<
         cur.fail(cur.block_loc(), "mesh2 needs uv_indices: its uv_vectors count (" +
                                       std::to_string(mesh.uvs.size()) +
                                       ") is neither 1 nor the vertex count");
-    for (scene::Mesh::Face& f : mesh.faces) f.uv = mesh.uvs.size() == 1 ? std::array<int, 3>{} : f.v;
+    for (scene::Mesh::Face& f : mesh.faces.edit()) f.uv = mesh.uvs.size() == 1 ? std::array<int, 3>{} : f.v;
 }
 
 bool read_inside_vector(ItemCursor& cur, const Item& item, scene::Mesh& mesh) {
@@ -175,7 +175,7 @@ scene::ObjectPtr build_mesh2(ItemCursor& cur) {
     if (have_normal_indices && normal_indices.size() != mesh.faces.size())
         cur.fail(cur.block_loc(), "normal_indices count differs from face_indices count");
     for (size_t i = 0; i < mesh.faces.size(); ++i) {
-        scene::Mesh::Face& f = mesh.faces[i];
+        scene::Mesh::Face& f = mesh.faces.edit()[i];
         check_range(cur, f.v, mesh.vertices.size(), "vertex", face_locs[i]);
         check_range(cur, f.tex, mesh.textures.size(), "texture", face_locs[i]);
         // Without normal_indices, normal_vectors are indexed like the vertices.

@@ -31,8 +31,8 @@ void transform_attachments(scene::Object& obj, const scene::Transform& t) {
     obj.interior_texture = transformed(obj.interior_texture, t);
     for (auto& c : obj.clipped_by) c = transformed(c, t);
     for (auto& b : obj.bounded_by) b = transformed(b, t);
-    if (auto* mesh = std::get_if<scene::Mesh>(&obj.shape))
-        for (auto& layers : mesh->textures) layers = transformed(layers, t);
+    if (auto* mesh = std::get_if<scene::Mesh>(&obj.shape); mesh && !mesh->textures.empty())
+        for (auto& layers : mesh->textures.edit()) layers = transformed(layers, t);
     if (auto* blob = std::get_if<scene::Blob>(&obj.shape))
         for (auto& c : blob->components) c.texture = transformed(c.texture, t);
     if (auto* csg = std::get_if<scene::Csg>(&obj.shape)) {

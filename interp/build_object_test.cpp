@@ -185,6 +185,31 @@ TEST_F(BuildObject, Mesh2IndicesAndTextures) {
     EXPECT_EQ(m.faces[1].n, (std::array<int, 3>{0, 0, 0}));
 }
 
+// Copies of a declared mesh share its vertices and faces (POV-Ray keeps one copy too), and a
+// copy that moves its per-triangle textures gets textures of its own.
+TEST_F(BuildObject, MeshCopiesShareTheirBulk) {
+    scene::Scene s = run(
+        "#declare M = mesh { triangle { 0, x, y texture { pigment { rgb 1 } } } triangle { 0, y, z } }\n"
+        "mesh { M translate x } object { M } mesh { M }");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const auto& a = std::get<scene::Mesh>(s.objects[0]->shape);
+    for (size_t i = 1; i < 3; ++i) {
+        const auto& b = std::get<scene::Mesh>(s.objects[i]->shape);
+        EXPECT_NE(a.vertices.identity(), nullptr);
+        EXPECT_EQ(a.vertices.identity(), b.vertices.identity());
+        EXPECT_EQ(a.faces.identity(), b.faces.identity());
+    }
+    const auto& kept1 = std::get<scene::Mesh>(s.objects[1]->shape).textures;
+    const auto& kept2 = std::get<scene::Mesh>(s.objects[2]->shape).textures;
+    EXPECT_EQ(kept1.identity(), kept2.identity());
+    EXPECT_NE(a.textures.identity(), kept2.identity());
+    auto placed_x = [](const scene::SharedVector<scene::LayeredTexture>& t) {
+        return t[0][0]->pattern.steps.composed_transform().point({0, 0, 0}).x;
+    };
+    EXPECT_DOUBLE_EQ(placed_x(a.textures), 1);  // the moved copy's texture moved with it
+    EXPECT_DOUBLE_EQ(placed_x(kept2), 0);
+}
+
 TEST_F(BuildObject, Mesh2IndexOutOfRangeIsAnError) {
     EXPECT_EQ(error_of("mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,3> } }"),
               "t.pov:1:57: error: vertex index 3 out of range (there are 3)");

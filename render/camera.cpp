@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numbers>
 
 #include <glm/common.hpp>
@@ -42,21 +44,46 @@ CameraModel::CameraModel(const scene::Camera& camera, int width, int height)
     // winding; distribution 1 numbers the faces of all meshes one after another.
     const scene::Camera::MeshRays& m = *camera.mesh;
     rays_per_sample_ = m.rays;
+    auto add_faces = [](const scene::Mesh& mesh, std::vector<Face>& out) {
+        for (const scene::Mesh::Face& f : mesh.faces) {
+            const glm::dvec3 &a = mesh.vertices[f.v[0]], &b = mesh.vertices[f.v[1]],
+                             &c = mesh.vertices[f.v[2]];
+            out.push_back({(a + b + c) / 3.0, unit_or_zero(glm::cross(c - a, b - a))});
+        }
+    };
+    // Copies of one mesh (the usual way to write many) share their vertices and faces, and
+    // so one face table here: a hundred copies of a 640x480 mesh would otherwise take 1.5 GB.
+    std::map<std::pair<const void*, const void*>, std::shared_ptr<const std::vector<Face>>> shared;
+    std::vector<Face> joined;  // distribution 1
     for (const auto& obj : m.meshes) {
         const auto* mesh = obj ? std::get_if<scene::Mesh>(&obj->shape) : nullptr;
         if (!mesh) continue;
-        if (meshes_.empty() || m.distribution != 1) meshes_.push_back({{}, obj->transform});
-        for (const scene::Mesh::Face& f : mesh->faces) {
-            const glm::dvec3 &a = mesh->vertices[f.v[0]], &b = mesh->vertices[f.v[1]],
-                             &c = mesh->vertices[f.v[2]];
-            meshes_.back().faces.push_back(
-                {(a + b + c) / 3.0, unit_or_zero(glm::cross(c - a, b - a))});
+        if (m.distribution == 1) {
+            if (meshes_.empty()) meshes_.push_back({nullptr, obj->transform});
+            add_faces(*mesh, joined);
+            continue;
         }
+        auto& faces = shared[{mesh->vertices.identity(), mesh->faces.identity()}];
+        if (!faces) {
+            auto table = std::make_shared<std::vector<Face>>();
+            add_faces(*mesh, *table);
+            faces = std::move(table);
+        }
+        meshes_.push_back({faces, obj->transform});
         if (m.distribution == 3) {  // POV-Ray uses only the first mesh
             index_uv_cells(*mesh);
             break;
         }
     }
+    if (!meshes_.empty() && m.distribution == 1)
+        meshes_.front().faces = std::make_shared<const std::vector<Face>>(std::move(joined));
+}
+
+size_t CameraModel::face_tables() const {
+    std::vector<const void*> tables;
+    for (const MeshFaces& m : meshes_)
+        if (std::find(tables.begin(), tables.end(), m.faces.get()) == tables.end()) tables.push_back(m.faces.get());
+    return tables.size();
 }
 
 namespace {
@@ -107,7 +134,7 @@ void CameraModel::index_uv_cells(const scene::Mesh& mesh) {
     };
     for (size_t i = 0; i < n; ++i) {
         const scene::Mesh::Face& f = mesh.faces[i];
-        if (meshes_.front().faces[i].normal == glm::dvec3(0)) continue;  // POV-Ray drops these
+        if ((*meshes_.front().faces)[i].normal == glm::dvec3(0)) continue;  // POV-Ray drops these
         const std::array<glm::dvec2, 3> p{corner_uv(mesh, f.uv[0]), corner_uv(mesh, f.uv[1]),
                                           corner_uv(mesh, f.uv[2])};
         const double scale = uv_scale(p);
@@ -149,7 +176,7 @@ bool CameraModel::uv_ray(double u, double v, glm::dvec3& origin, glm::dvec3& dir
             b[0] < 0 || b[1] < 0 || b[2] < 0)
             continue;
         origin = mesh.vertices[f.v[0]] * b[0] + mesh.vertices[f.v[1]] * b[1] + mesh.vertices[f.v[2]] * b[2];
-        dir = meshes_.front().faces[cell_faces_[j]].normal;
+        dir = (*meshes_.front().faces)[cell_faces_[j]].normal;
         const bool has_normals = std::all_of(f.n.begin(), f.n.end(), [&](int i) {
             return i >= 0 && size_t(i) < mesh.normals.size();
         });
@@ -181,7 +208,7 @@ bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
             break;
         case 1: {  // the meshes joined; rays after the first fall past the faces (as in POV)
             face = (long long)(cy) * w + (long long)(cx) + (long long)(k) * (long long)(
-                       meshes_.empty() ? 0 : meshes_[0].faces.size());
+                       meshes_.empty() ? 0 : meshes_[0].faces->size());
             break;
         }
         case 2: {  // the meshes side by side, each W / n columns wide
@@ -196,9 +223,9 @@ bool CameraModel::mesh_ray(double x, double y, int k, Ray& ray) const {
             break;
     }
     if (m.distribution != 3) {
-        if (mesh >= meshes_.size() || face < 0 || size_t(face) >= meshes_[mesh].faces.size())
+        if (mesh >= meshes_.size() || face < 0 || size_t(face) >= meshes_[mesh].faces->size())
             return false;
-        const Face& f = meshes_[mesh].faces[size_t(face)];
+        const Face& f = (*meshes_[mesh].faces)[size_t(face)];
         origin = f.centre;
         dir = f.normal;
     }

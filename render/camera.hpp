@@ -2,6 +2,7 @@
 // interpreter (angle, look_at, orthographic scaling, transforms), so this is only the mapping.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,8 @@ public:
     int rays_per_sample() const { return rays_per_sample_; }
     std::optional<Ray> ray(double x, double y, int k) const;
     const scene::Camera& camera() const { return camera_; }
+    // mesh_camera: how many face tables its meshes hold (copies of one mesh share one).
+    size_t face_tables() const;
 
 private:
     // The unnormalised direction (and, for the projections that move it, the origin) of the
@@ -49,7 +52,7 @@ private:
         glm::dvec3 centre, normal;  // object space; normal unit length
     };
     struct MeshFaces {
-        std::vector<Face> faces;
+        std::shared_ptr<const std::vector<Face>> faces;  // shared by copies of one mesh
         scene::Transform to_world;
     };
     std::vector<MeshFaces> meshes_;  // distribution 1: one list, all meshes' faces in order

@@ -181,6 +181,15 @@ TEST(Camera, MeshCameraRaysLeaveTheFacesInPovRaysOrder) {
     const CameraModel back(c, 4, 3);
     EXPECT_NEAR(back.ray(0, 0)->dir.z, -1, 1e-12);
     EXPECT_NEAR(back.ray(0, 0)->origin.x, 5, 1e-12);
+    // A copy shares its mesh's face table, in its own place; another mesh has its own table.
+    c.mesh->reverse = false;
+    c.mesh->rays = 3;
+    c.mesh->meshes = {pixel_grid(4, 3), nullptr, moved};
+    c.mesh->meshes[1] = std::make_shared<scene::Object>(*c.mesh->meshes[0]);
+    const CameraModel copies(c, 4, 3);
+    EXPECT_EQ(copies.face_tables(), 2u);
+    EXPECT_NEAR(copies.ray(0, 0, 2)->origin.x, copies.ray(0, 0, 0)->origin.x + 5, 1e-12);
+    EXPECT_NEAR(copies.ray(0, 0, 1)->origin.x, copies.ray(0, 0, 0)->origin.x, 1e-12);
 }
 
 // Distribution 3 (uv baking): a mesh whose faces are given with their 3D corners and uvs.

@@ -207,7 +207,7 @@ scene::Mesh unit_cube_mesh() {
 TEST(GeometryMesh, PerTriangleTexturesAndInsideVector) {
     scene::Mesh m = unit_cube_mesh();
     m.textures = {some_texture()};
-    m.faces[0].tex = {0, 0, 0};  // the z = -1 face, first half
+    m.faces.edit()[0].tex = {0, 0, 0};  // the z = -1 face, first half
     auto mesh = make(m);
     mesh->texture = some_texture();
     Geometry g(scene_of({mesh}));

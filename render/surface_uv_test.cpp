@@ -109,7 +109,7 @@ TEST(SurfaceUv, MeshBlendsItsCornerUvsAndPatchesMapOntoTheirCorners) {
     // (u, v) = (0.25, 0.25): lerp(lerp(s0, s1, v), lerp(s3, s2, v), u).
     expect_uv(uv_of_ray(p, {0.25, 0.25, -1}, {0, 0, 1}), 0.5, 1);
     scene::Mesh bare = m;
-    bare.faces[0].uv = {-1, -1, -1};
+    bare.faces.edit()[0].uv = {-1, -1, -1};
     expect_uv(uv_of_ray(make_mesh(bare), {0.25, 0.25, -1}, {0, 0, 1}), 0, 0);
 }
 

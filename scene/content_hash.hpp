@@ -69,6 +69,7 @@ public:
         add(uint64_t(v.size()));
         for (const T& e : v) add(e);
     }
+    template <class T> void add(const SharedVector<T>& v) { add(v.get()); }
     template <class T> void add(const std::optional<T>& o) {
         add(bool(o));
         if (o) add(*o);

@@ -15,6 +15,7 @@
 
 #include "function/program.hpp"
 #include "scene/pattern.hpp"
+#include "scene/shared_vector.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
 
@@ -75,10 +76,11 @@ struct Polygon {  // as written (sub-polygons closed)
     std::vector<glm::dvec3> points;
     LUMEN_FIELDS(f("points", s.points))
 };
+// The bulk (vertices, normals, uvs, faces, textures) is shared by copies of the mesh.
 struct Mesh {
-    std::vector<glm::dvec3> vertices;
-    std::vector<glm::dvec3> normals;
-    std::vector<glm::dvec2> uvs;
+    SharedVector<glm::dvec3> vertices;
+    SharedVector<glm::dvec3> normals;
+    SharedVector<glm::dvec2> uvs;
     struct Face {
         std::array<int, 3> v{};       // vertex indices
         std::array<int, 3> n{-1, -1, -1};  // normal indices (-1 = flat)
@@ -86,8 +88,8 @@ struct Mesh {
         std::array<int, 3> uv{-1, -1, -1};   // uv indices (-1 = uv (0, 0))
         LUMEN_FIELDS(f("v", s.v), f("n", s.n), f("tex", s.tex), f("uv", s.uv))
     };
-    std::vector<Face> faces;
-    std::vector<LayeredTexture> textures;  // texture_list / per-triangle textures
+    SharedVector<Face> faces;
+    SharedVector<LayeredTexture> textures;  // texture_list / per-triangle textures
     std::optional<glm::dvec3> inside_vector;
     // A bicubic_patch's texture corners s0..s3 (its `uv_vectors`), empty for other meshes: the
     // face uvs are then the patch parameters (u, v), mapped bilinearly onto the corners.

@@ -149,10 +149,11 @@ TEST(Mesher, TrianglePolygonAndMesh) {
     for (const auto& p : lshape) EXPECT_NEAR(p.normal.z, 1.0, 1e-12);
     scene::Mesh m;
     m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-    m.faces.resize(3);
-    m.faces[0].v = {0, 1, 2};
-    m.faces[1].v = {0, 2, 3};
-    m.faces[2].v = {0, 2, 99};  // bad index: skipped
+    auto& faces = m.faces.edit();
+    faces.resize(3);
+    faces[0].v = {0, 1, 2};
+    faces[1].v = {0, 2, 3};
+    faces[2].v = {0, 2, 99};  // bad index: skipped
     EXPECT_NEAR(total_area(mesh(object(m), 0.25)), 1.0, 1e-9);
 }
 
