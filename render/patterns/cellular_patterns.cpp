@@ -42,61 +42,52 @@ double unmeasured(double d, double metric) {
     return std::pow(d, 1 / metric);
 }
 
-// The three smallest distances seen so far and the feature point of the smallest: the first
-// three sorted, each later one inserted with strict comparisons (so a tie keeps the earlier).
+// The three smallest distances seen so far, in order, and the feature point of the first
+// smallest (a later tie keeps the earlier, as POV's strict comparisons do). The distances
+// pass through a min/max chain rather than branches: which of 27 is near is unpredictable.
 class NearestThree {
 public:
     void add(double d, const glm::dvec3& f) {
-        if (n_ < 3) {
-            d_[n_] = d, f_[n_] = f;
-            if (++n_ == 3) sort_first();
-            return;
-        }
-        if (d < d_[0]) {
-            d_[2] = d_[1], d_[1] = d_[0], d_[0] = d;
-            f_[0] = f;
-        } else if (d < d_[1]) {
-            d_[2] = d_[1], d_[1] = d;
-        } else if (d < d_[2]) {
-            d_[2] = d;
-        }
+        if (d < d_[0]) f_ = f;
+        const double up0 = std::max(d_[0], d);
+        d_[0] = std::min(d_[0], d);
+        const double up1 = std::max(d_[1], up0);
+        d_[1] = std::min(d_[1], up0);
+        d_[2] = std::min(d_[2], up1);
     }
     double third() const { return d_[2]; }
     const double* d() const { return d_; }
-    const glm::dvec3& nearest() const { return f_[0]; }
+    const glm::dvec3& nearest() const { return f_; }
 
 private:
-    void sort_first() {
-        for (int i = 1; i < 3; ++i)
-            for (int j = i; j > 0 && d_[j] < d_[j - 1]; --j) {
-                std::swap(d_[j], d_[j - 1]);
-                std::swap(f_[j], f_[j - 1]);
-            }
-    }
-    double d_[3] = {0, 0, 0};
-    glm::dvec3 f_[3];
-    int n_ = 0;
+    double d_[3] = {INFINITY, INFINITY, INFINITY};
+    glm::dvec3 f_{0};
 };
 
 // The feature points of the home cube and its 26 neighbours, x outermost. Neighbouring
-// samples mostly share a home cube, so each thread keeps the last one's.
+// samples mostly share a home cube, so each thread keeps the last ones' in a small table
+// indexed by the cube (several crackle patterns, as in several media, take turns in it).
 const std::array<glm::dvec3, 27>& inner_feature_points(const int (&h)[3]) {
-    struct Cache {
-        int home[3];
+    struct Entry {
+        int home[3] = {0, 0, 0};
         bool valid = false;
         std::array<glm::dvec3, 27> points;
     };
-    thread_local Cache cache;
-    if (!cache.valid || cache.home[0] != h[0] || cache.home[1] != h[1] || cache.home[2] != h[2]) {
+    constexpr unsigned kEntries = 64;
+    thread_local std::array<Entry, kEntries> cache;
+    const unsigned slot =
+        (unsigned(h[0]) * 73856093u ^ unsigned(h[1]) * 19349663u ^ unsigned(h[2]) * 83492791u) % kEntries;
+    Entry& e = cache[slot];
+    if (!e.valid || e.home[0] != h[0] || e.home[1] != h[1] || e.home[2] != h[2]) {
         int n = 0;
         for (int dx = -1; dx <= 1; ++dx)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dz = -1; dz <= 1; ++dz)
-                    cache.points[n++] = feature_point(h[0] + dx, h[1] + dy, h[2] + dz);
-        std::copy(h, h + 3, cache.home);
-        cache.valid = true;
+                    e.points[n++] = feature_point(h[0] + dx, h[1] + dy, h[2] + dz);
+        std::copy(h, h + 3, e.home);
+        e.valid = true;
     }
-    return cache.points;
+    return e.points;
 }
 
 }  // namespace
@@ -118,7 +109,17 @@ double evaluate(const pattern::Crackle& k, const glm::dvec3& p, const scene::Pat
     const int h[3] = {int(fx), int(fy), int(fz)};
     const double m = k.metric;
     NearestThree near;
-    for (const glm::dvec3& f : inner_feature_points(h)) near.add(distance(p, f, m), f);
+    const std::array<glm::dvec3, 27>& inner = inner_feature_points(h);
+    double d27[27];
+    if (m == 2) {  // the usual metric, in a loop the compiler vectorises
+        for (int i = 0; i < 27; ++i) {
+            const double dx = inner[i].x - p.x, dy = inner[i].y - p.y, dz = inner[i].z - p.z;
+            d27[i] = dx * dx + dy * dy + dz * dz;
+        }
+    } else {
+        for (int i = 0; i < 27; ++i) d27[i] = distance(p, inner[i], m);
+    }
+    for (int i = 0; i < 27; ++i) near.add(d27[i], inner[i]);
     auto visit = [&](int a, int b, int c) {
         const glm::dvec3 f = feature_point(a, b, c);
         near.add(distance(p, f, m), f);
