@@ -56,7 +56,7 @@ bool clear_node(const NodeStore& store, uint32_t index) {
     const Node& n = store.nodes[index];
     if (n.kind == NodeKind::Shape) {
         // Mesh triangles may carry textures of their own.
-        if (std::holds_alternative<std::unique_ptr<MeshShape>>(store.shapes[n.shape])) return false;
+        if (std::holds_alternative<MeshPtr>(store.shapes[n.shape])) return false;
         return passes_all_light(n.texture) &&
                (!n.interior_texture || passes_all_light(n.interior_texture)) &&
                clear_for_shadows(n.interior);
@@ -77,8 +77,8 @@ bool opaque_node(const NodeStore& store, uint32_t index) {
     }
     if (may_pass_light(n.texture) || may_pass_light(n.interior_texture)) return false;
     const ShapeData& d = store.shapes[n.shape];
-    if (const auto* mesh = std::get_if<std::unique_ptr<MeshShape>>(&d))
-        for (const scene::LayeredTexture& t : (*mesh)->mesh->textures)
+    if (const auto* mesh = std::get_if<MeshPtr>(&d))
+        for (const scene::LayeredTexture& t : (*mesh)->mesh.textures)
             if (may_pass_light(&t)) return false;
     if (const auto* blob = std::get_if<BlobShape>(&d))
         for (const scene::LayeredTexture* t : blob->textures)

@@ -289,7 +289,7 @@ size_t count_primitives(const NodeStore& store, uint32_t index) {
             total += count_primitives(store, store.links[n.children + i]);
         return total;
     }
-    if (auto* mesh = std::get_if<std::unique_ptr<MeshShape>>(&store.shapes[n.shape]))
+    if (auto* mesh = std::get_if<MeshPtr>(&store.shapes[n.shape]))
         return (*mesh)->face.size();
     return 1;
 }

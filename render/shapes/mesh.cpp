@@ -1,7 +1,10 @@
 // mesh / mesh2: triangles in a per-mesh BVH; per-face textures and smooth normals are looked
 // up from the source mesh only for the final hit. Inside only with inside_vector: the parity
 // of the surface crossings along it.
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include <glm/geometric.hpp>
 
@@ -41,9 +44,9 @@ glm::dvec2 face_uv(const scene::Mesh& m, const scene::Mesh::Face& face, double b
 
 }  // namespace
 
-std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal traversal) {
-    auto out = std::make_unique<MeshShape>();
-    out->mesh = &m;
+MeshPtr make_mesh(const scene::Mesh& m, MeshTraversal traversal) {
+    auto out = std::make_shared<MeshShape>();
+    out->mesh = m;
     std::vector<TriangleCore> tris;
     std::vector<uint32_t> faces;
     std::vector<uint32_t> corners;  // each triangle's vertex indices
@@ -94,6 +97,35 @@ std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m, MeshTraversal travers
     return out;
 }
 
+// Copies of a mesh share its vertices, faces, normals, uvs and textures (scene::SharedVector),
+// and with them one prepared mesh: a hundred copies of a 20,000-triangle mesh build one tree,
+// not a hundred. The table holds each prepared mesh weakly, by where its bulk lives; the
+// shape keeps that bulk alive, so an address in the table cannot be reused while it is.
+MeshPtr shared_mesh(const scene::Mesh& m, MeshTraversal traversal) {
+    struct Key {
+        const void *vertices, *normals, *uvs, *faces, *textures;
+        MeshTraversal traversal;
+        auto operator<=>(const Key&) const = default;
+    };
+    const Key key{m.vertices.identity(), m.normals.identity(), m.uvs.identity(),
+                  m.faces.identity(),    m.textures.identity(), traversal};
+    if (!key.faces) return make_mesh(m, traversal);
+    static std::mutex mutex;
+    static std::map<Key, std::weak_ptr<const MeshShape>> table;
+    static size_t swept_at = 64;
+    const std::lock_guard lock(mutex);
+    std::weak_ptr<const MeshShape>& entry = table[key];
+    if (MeshPtr s = entry.lock())
+        if (s->mesh.inside_vector == m.inside_vector && s->mesh.patch_corners == m.patch_corners) return s;
+    MeshPtr s = make_mesh(m, traversal);
+    entry = s;
+    if (table.size() >= 2 * swept_at) {  // forget meshes no longer in use, now and then
+        std::erase_if(table, [](const auto& e) { return e.second.expired(); });
+        swept_at = std::max<size_t>(64, table.size());
+    }
+    return s;
+}
+
 bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     if (!s.valid) return false;
     int best = -1;
@@ -116,7 +148,7 @@ bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, 
         if (best < 0) return false;
         normal = glm::cross(s.tris[best].e1, s.tris[best].e2);
     }
-    const scene::Mesh& m = *s.mesh;
+    const scene::Mesh& m = s.mesh;
     h.t = tmax;
     h.normal = normal;
     h.uv = glm::dvec2(0);
@@ -160,8 +192,8 @@ bool any_hit(const MeshShape& s, const LocalRay& r, double tmin, double tmax, do
 }
 
 bool inside(const MeshShape& s, const glm::dvec3& p) {
-    if (!s.valid || !s.mesh->inside_vector || !s.box.contains(p)) return false;
-    LocalRay r{p, *s.mesh->inside_vector};
+    if (!s.valid || !s.mesh.inside_vector || !s.box.contains(p)) return false;
+    LocalRay r{p, *s.mesh.inside_vector};
     if (r.d == glm::dvec3(0)) return false;
     if (s.embree) return s.embree->crossings(r) % 2 == 1;
     double tmax = Aabb::inf;

@@ -12,8 +12,10 @@
 
 namespace lumen::render {
 
+// Shared by the copies of one mesh (ShapeTraits<scene::Mesh>::prepare), as POV-Ray shares a
+// mesh's data between copies: `mesh` is a copy, so its bulk lives as long as the shape does.
 struct MeshShape {
-    const scene::Mesh* mesh = nullptr;
+    scene::Mesh mesh;
     std::vector<TriangleCore> tris;    // in BVH order; none with Embree
     std::vector<uint32_t> face;        // source face of each triangle
     WideBvh bvh;                       // empty when built without acceleration or with Embree
@@ -26,8 +28,11 @@ struct MeshShape {
 enum class MeshTraversal { Scan, Bvh, Best };
 // Below this many triangles lumen's own BVH serves as well as Embree's.
 inline constexpr size_t kEmbreeMinTriangles = 256;
-std::unique_ptr<MeshShape> make_mesh(const scene::Mesh& m,
-                                     MeshTraversal traversal = MeshTraversal::Best);
+using MeshPtr = std::shared_ptr<const MeshShape>;
+// A new prepared mesh.
+MeshPtr make_mesh(const scene::Mesh& m, MeshTraversal traversal = MeshTraversal::Best);
+// The prepared mesh of m's copies while one is in use (one per traversal), else a new one.
+MeshPtr shared_mesh(const scene::Mesh& m, MeshTraversal traversal);
 bool intersect(const MeshShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
 // Some triangle (not necessarily the nearest) at tmin < t < tmax, its t in `t`: a shadow
 // ray's test, which may stop at the first one.
@@ -36,16 +41,15 @@ bool inside(const MeshShape& s, const glm::dvec3& p);
 Aabb bounds(const MeshShape& s);
 
 // Only a mesh with an inside_vector has an inside.
-inline Aabb solid_bounds(const MeshShape& s) { return s.mesh->inside_vector ? bounds(s) : Aabb{}; }
+inline Aabb solid_bounds(const MeshShape& s) { return s.mesh.inside_vector ? bounds(s) : Aabb{}; }
 
 // The prepared form is the pointer (shape.hpp forwards to the mesh).
-using MeshPtr = std::unique_ptr<MeshShape>;
 
 template <> struct ShapeTraits<scene::Mesh> {
     using Prepared = MeshPtr;
     static constexpr double min_depth = kDepthDefault;
     static Prepared prepare(const scene::Mesh& m, bool accelerate) {
-        return make_mesh(m, accelerate ? MeshTraversal::Best : MeshTraversal::Scan);
+        return shared_mesh(m, accelerate ? MeshTraversal::Best : MeshTraversal::Scan);
     }
     // Not baked: traced in object space under its transform.
     static bool bake(const scene::Mesh&, const scene::Transform&, Prepared&) { return false; }

@@ -6,6 +6,7 @@
 #pragma once
 #include <concepts>
 #include <memory>
+#include <type_traits>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -56,16 +57,17 @@ struct PreparedBy {
 // Free functions every prepared shape has (found by argument-dependent lookup). A shape with
 // no inside (disc, triangle, polygon) says so with inside() false and an empty solid box.
 // Large prepared shapes (meshes, height fields) are held by pointer: these forward to them.
-template <class S>
-bool intersect(const std::unique_ptr<S>& s, const LocalRay& r, double tmin, double tmax,
-               ShapeHit& h) {
+template <class P> struct IsHeldShape : std::false_type {};
+template <class S> struct IsHeldShape<std::unique_ptr<S>> : std::true_type {};
+template <class S> struct IsHeldShape<std::shared_ptr<S>> : std::true_type {};  // shared meshes
+template <class P> concept HeldShape = IsHeldShape<P>::value;
+template <HeldShape P>
+bool intersect(const P& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h) {
     return intersect(*s, r, tmin, tmax, h);
 }
-template <class S> bool inside(const std::unique_ptr<S>& s, const glm::dvec3& p) {
-    return inside(*s, p);
-}
-template <class S> Aabb bounds(const std::unique_ptr<S>& s) { return bounds(*s); }
-template <class S> Aabb solid_bounds(const std::unique_ptr<S>& s) { return solid_bounds(*s); }
+template <HeldShape P> bool inside(const P& s, const glm::dvec3& p) { return inside(*s, p); }
+template <HeldShape P> Aabb bounds(const P& s) { return bounds(*s); }
+template <HeldShape P> Aabb solid_bounds(const P& s) { return solid_bounds(*s); }
 // Where a shape's surface can be within `clip`: its box cut to it, unless the shape has a
 // tighter answer of its own (quadrics: render/shapes/quadric.hpp).
 template <class S> Aabb bounds_within(const S& s, const Aabb& clip) {
