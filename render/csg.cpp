@@ -20,16 +20,18 @@ bool inside_all(const NodeStore& store, uint32_t first, uint32_t count, const gl
     return true;
 }
 
-// bounded_by: the object counts only for rays that meet a bound or start inside one.
+// bounded_by: the object counts only for rays that meet every bound or start inside it, as
+// POV-Ray tests its bounding objects (`bounded_by { clipped_by }` over a cylinder and two
+// planes bounds by their intersection, not by whichever plane a ray crosses).
 bool ray_meets_bounds(const NodeStore& store, const Node& n, const Ray& ray) {
     for (uint32_t i = 0; i < n.bound_count; ++i) {
         uint32_t b = store.links[n.bounds + i];
         NodeHit h;
-        if (inside_node(store, b, ray.origin) ||
-            intersect_node(store, b, ray, 0.0, Aabb::inf, false, h))
-            return true;
+        if (!intersect_node(store, b, ray, 0.0, Aabb::inf, false, h) &&
+            !inside_node(store, b, ray.origin))
+            return false;
     }
-    return false;
+    return true;
 }
 
 // Whether a hit of child `which` at p survives the CSG operation of node n.

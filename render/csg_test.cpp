@@ -161,13 +161,35 @@ TEST(Csg, ClipsOfCsgChildrenAreInWorldSpace) {
 }
 
 TEST(Csg, BoundedBySkipsRaysMissingTheBound) {
-    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    auto s = csg(CsgOp::Union, {make(scene::Sphere{{0, 0, 0}, 1})});
     s->bounded_by = {make(scene::Box{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}})};
     Geometry g(scene_of({s}));
     EXPECT_FALSE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));
     auto h = trace(g, ray({-5, 0, 0}, {1, 0, 0}));
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->t, 4, 1e-12);
+}
+
+// Several bounding objects bound by their intersection: a ray must meet (or start in) each
+// (POV-Ray: a union bounded by two crossed slabs shows only where both are).
+TEST(Csg, BoundedByNeedsEveryBound) {
+    auto s = csg(CsgOp::Union, {make(scene::Sphere{{0, 0, 0}, 1})});
+    s->bounded_by = {make(scene::Box{{-2, -0.1, -2}, {2, 0.1, 2}}),
+                     make(scene::Box{{-0.1, -2, -2}, {0.1, 2, 2}})};
+    Geometry g(scene_of({s}));
+    EXPECT_FALSE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));  // meets the second slab only
+    EXPECT_FALSE(trace(g, ray({0.5, 0, -5}, {0, 0, 1})));  // the first only
+    auto h = trace(g, ray({0.05, 0, -5}, {0, 0, 1}));      // both
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 5 - std::sqrt(1 - 0.05 * 0.05), 1e-12);
+}
+
+// POV-Ray's Remove_Bounds drops a bounded_by on the simplest shapes: the sphere is drawn whole.
+TEST(Csg, ASpheresOwnBoundedByIsDropped) {
+    auto s = make(scene::Sphere{{0, 0, 0}, 1});
+    s->bounded_by = {make(scene::Box{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}})};
+    Geometry g(scene_of({s}));
+    EXPECT_TRUE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));
 }
 
 TEST(Csg, NestedWithTransforms) {
