@@ -10,18 +10,15 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 lumen=$root/build/lumen
 repeats=3
-while [ $# -gt 0 ]; do
-    case $1 in
-        --repeats) repeats=$2; shift ;;
-        --lumen) lumen=$2; shift ;;
+args=("$@")
+for ((i = 0; i < ${#args[@]}; i += 2)); do  # each option takes a value
+    case ${args[i]}=${args[i + 1]:-} in
+        --repeats=?*) repeats=${args[i + 1]} ;;
+        --lumen=?*) lumen=${args[i + 1]} ;;
         *) echo "usage: $0 [--repeats N] [--lumen PATH]" >&2; exit 2 ;;
     esac
-    shift
 done
-command -v povray >/dev/null || { echo "povray missing: tools/install-deps.sh" >&2; exit 1; }
-[ -x /usr/bin/time ] || { echo "/usr/bin/time missing (package time)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$root/bench/measure_common.sh"
 
 # The scene with `copies` copies of a bumpy 100 x 100 sphere grid, in rows of 20.
 gen_scene() {

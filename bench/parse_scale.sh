@@ -27,10 +27,7 @@ while [ $# -gt 0 ]; do
     esac
     shift
 done
-command -v povray >/dev/null || { echo "povray missing: tools/install-deps.sh" >&2; exit 1; }
-[ -x /usr/bin/time ] || { echo "/usr/bin/time missing (package time)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$root/bench/measure_common.sh"
 mkdir -p "$out"
 csv=$out/parse_scale.csv
 
