@@ -184,14 +184,6 @@ TEST(Csg, BoundedByNeedsEveryBound) {
     EXPECT_NEAR(h->t, 5 - std::sqrt(1 - 0.05 * 0.05), 1e-12);
 }
 
-// POV-Ray's Remove_Bounds drops a bounded_by on the simplest shapes: the sphere is drawn whole.
-TEST(Csg, ASpheresOwnBoundedByIsDropped) {
-    auto s = make(scene::Sphere{{0, 0, 0}, 1});
-    s->bounded_by = {make(scene::Box{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}})};
-    Geometry g(scene_of({s}));
-    EXPECT_TRUE(trace(g, ray({-5, 0.5, 0}, {1, 0, 0})));
-}
-
 TEST(Csg, NestedWithTransforms) {
     // union { difference { box, sphere } translate x*10 } rotate y*90: cube centre at (0,0,-10).
     auto d = csg(CsgOp::Difference, {make(scene::Box{{-1, -1, -1}, {1, 1, 1}}),

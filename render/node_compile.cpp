@@ -1,8 +1,6 @@
 // Turns scene objects into nodes: composes transforms, resolves inheritance (texture,
 // interior, no_shadow, inverse parity) and computes the boxes used for culling.
 #include <cmath>
-#include <type_traits>
-#include <variant>
 
 #include "base/diagnostics.hpp"
 #include "render/node.hpp"
@@ -125,21 +123,6 @@ std::vector<uint32_t> compile_helpers(NodeStore& store, const std::vector<scene:
     return inherited;
 }
 
-// POV-Ray's Remove_Bounds (on by default) drops the bounded_by of these shapes: probed, a
-// sphere, box, plane, disc, triangle, polygon, mesh (bicubic_patch too) or height field
-// bounded by two crossed slabs is drawn whole, while every other shape and CSG is cut to
-// where both slabs are (render/csg.cpp: ray_meets_bounds).
-bool pov_drops_bounds(const scene::Shape& shape) {
-    return std::visit(
-        []<class T>(const T&) {
-            return std::is_same_v<T, scene::Sphere> || std::is_same_v<T, scene::Box> ||
-                   std::is_same_v<T, scene::Plane> || std::is_same_v<T, scene::Disc> ||
-                   std::is_same_v<T, scene::Triangle> || std::is_same_v<T, scene::Polygon> ||
-                   std::is_same_v<T, scene::Mesh> || std::is_same_v<T, scene::HeightField>;
-        },
-        shape);
-}
-
 }  // namespace
 
 uint32_t compile_object(NodeStore& store, const scene::Object& object, const NodeContext& ctx,
@@ -167,10 +150,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
     node.global_lights = ctx.global_lights;
 
     std::vector<uint32_t> clips = compile_helpers(store, object.clipped_by, ctx, accelerate, ctx.clips);
-    std::vector<uint32_t> bounds =
-        pov_drops_bounds(object.shape)
-            ? ctx.bounds
-            : compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
+    std::vector<uint32_t> bounds = compile_helpers(store, object.bounded_by, ctx, accelerate, ctx.bounds);
 
     if (auto* csg = std::get_if<scene::Csg>(&object.shape)) {
         // POV-Ray inverts a union into the intersection of its inverted members (De Morgan):
