@@ -27,8 +27,8 @@ bool ray_meets_bounds(const NodeStore& store, const Node& n, const Ray& ray) {
     for (uint32_t i = 0; i < n.bound_count; ++i) {
         uint32_t b = store.links[n.bounds + i];
         NodeHit h;
-        if (!intersect_node(store, b, ray, 0.0, Aabb::inf, false, h) &&
-            !inside_node(store, b, ray.origin))
+        if (!inside_node(store, b, ray.origin) &&  // the cheaper test first
+            !intersect_node(store, b, ray, 0.0, Aabb::inf, false, h))
             return false;
     }
     return true;

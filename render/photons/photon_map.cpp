@@ -100,7 +100,6 @@ PhotonMap::Bounds PhotonMap::bound_range(int start, int end, size_t node) {
     return b;
 }
 
-
 // [start, end] inclusive, split at mid = (start + end) / 2 on the widest axis. A range of two
 // is left as it is (POV-Ray's quirk: its second photon may lie on the wrong side).
 void PhotonMap::subdivide(int start, int end) {
