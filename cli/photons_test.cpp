@@ -153,5 +153,61 @@ TEST(Photons, CausticReplacesTheFilteredShadow) {
     EXPECT_LT(lit.low, 0.7 * direct);
 }
 
+// Glass over a plane at y = -2, lit by a spotlight from high on the side or a point light
+// straight above, its photons cut at `adc_bailout`.
+std::string glass_scene(const std::string& adc, bool from_above, const std::string& objects) {
+    const std::string light =
+        from_above ? "light_source { <0, 50, 0> rgb 1 }"
+                   : "light_source { <500, 550, -100> rgb 1 spotlight radius 1 falloff 1.1 "
+                     "tightness 1 point_at <-19, -4, 7> }";
+    return "#version 3.7;\n"
+           "global_settings { photons { spacing 0.01 autostop 0 jitter 0.5 max_trace_level 15 "
+           "adc_bailout " + adc + " } }\n" + light + "\nplane { y, -2 pigment { rgb 0.5 } }\n" +
+           objects + "\n";
+}
+const std::string kTargetBoth = " photons { target refraction on reflection on collect off } ";
+
+// POV-Ray's stored counts for these scenes (povray 3.7, +WT2), which place adc_bailout on
+// either side of a cut: lumen within 0.2% of each, or 20 photons of a small count.
+void expect_stored_near(const std::string& text, double pov) {
+    const Shot s = shoot(text);
+    EXPECT_NEAR(double(s.stored), pov, std::max(pov * 0.002, 20.0)) << text;
+}
+
+TEST(Photons, AdcBailoutWeighsARefractionByItsFilterAndAReflectionTwice) {
+    // A filter 0.7 cylinder with reflection 0.1 (ior 1): the photon refracted in and
+    // reflected inside weighs 0.7 * 0.1 * 0.1 * 0.7 = 0.0049 on its way out; a reflection
+    // from outside weighs 0.01.
+    const std::string cylinder = "cylinder { -1.5 * y, 2 * y, 1 pigment { rgbf <1, 1, 1, 0.7> } "
+                                 "finish { reflection 0.1 } interior { ior 1 }" + kTargetBoth + "}";
+    expect_stored_near(glass_scene("0.0048", false, cylinder), 165859);
+    expect_stored_near(glass_scene("0.005", false, cylinder), 118206);
+    expect_stored_near(glass_scene("0.0101", false, cylinder), 70641);
+    // Two slabs, filter 0.5 then 0.6: through both the weight is 0.5² * 0.6² = 0.09.
+    const std::string slabs = "union { box { <-1, 1, -1>, <1, 1.5, 1> pigment { rgbf <1, 1, 1, 0.5> } } "
+                              "box { <-1, 0, -1>, <1, 0.5, 1> pigment { rgbf <1, 1, 1, 0.6> } } "
+                              "interior { ior 1.5 }" + kTargetBoth + "}";
+    expect_stored_near(glass_scene("0.08", true, slabs), 39330);
+    expect_stored_near(glass_scene("0.1", true, slabs), 810);
+}
+
+TEST(Photons, TotalInternalReflectionTakesThePlaceOfTheTopReflection) {
+    // A dark glass cylinder (filter 0.05, ior 1.5): photons reflected totally inside it.
+    const std::string cylinder = "cylinder { -1.5 * y, 2 * y, 1 pigment { rgbf <1, 1, 1, 0.05> } "
+                                 "interior { ior 1.5 }" + kTargetBoth + "}";
+    expect_stored_near(glass_scene("0.000001", false, cylinder), 55653);
+    expect_stored_near(glass_scene("0.0024", false, cylinder), 34067);
+}
+
+TEST(Photons, PassThroughOnlyOnTheWayToTheTarget) {
+    // Under the lens, a pass_through slab is met as any other surface: photons land on it and
+    // refract through it (its own photons block says refraction on).
+    const std::string lens_over_slab =
+        "sphere { <0, 1.5, 0>, 0.5 pigment { rgbf 1 } interior { ior 1.5 }" + kTargetBoth + "} "
+        "box { <-1, 0, -1>, <1, 0.2, 1> pigment { rgbf <1, 1, 1, 0.5> } interior { ior 1.3 } "
+        "photons { pass_through refraction on } }";
+    expect_stored_near(glass_scene("0.0039", true, lens_over_slab), 21162);
+}
+
 }  // namespace
 }  // namespace lumen::cli

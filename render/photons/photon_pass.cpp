@@ -137,12 +137,12 @@ public:
           adc_(adc), rng_(&rng), out_(out.photons), media_out_(out.media_photons) {}
 
     // Traces a photon from the light; true when its first hit (past pass_through objects) is
-    // the target.
+    // the target. Each surface met is a level, pass_through ones included.
     bool trace(Ray ray, glm::dvec3 colour, double weight, int level, double travelled,
                InteriorList interiors) const {
-        bool passed = false;  // the last surface met was pass_through
-        for (int i = 0; i < kMaxSkippedSurfaces; ++i) {
-            if (level > max_level_) return false;
+        bool passed = false;  // the last surface met was passed through
+        for (int i = 0; i < kMaxSkippedSurfaces; ++i, ++level) {
+            if (level > max_level_ || weight < adc_) return false;
             Hit hit;
             if (!find_hit(ray, hit)) return false;
             if (level > 1 && !passed && settings_.media_steps > 0)
@@ -150,15 +150,17 @@ public:
             travelled += hit.t;
             if (hit.interior && interiors.find(hit.interior_id) >= 0)
                 colour *= interior_fade(*hit.interior, hit.t, true);
-            const bool pass = hit.photons && hit.photons->pass_through;
-            if (level == 1 && !pass && hit.photon_target != combo_.target->object) return false;
+            // Only on the way to the target is a pass_through object passed through; after it,
+            // the object is met as any other (POV-Ray).
+            const bool before_target = level == 1 || passed;
+            const bool pass = before_target && hit.photons && hit.photons->pass_through;
+            if (before_target && !pass && hit.photon_target != combo_.target->object) return false;
             if (pass) {
-                // Straight on, filtered by the surface (POV: pass_through).
+                // Straight on, filtered by the surface.
                 const SurfacePoint uv_only{hit.point, hit.normal, ray.dir, hit.uv};
                 const glm::dvec3 f = surface_filter(facing_texture(hit, ray.dir), hit.point, &uv_only);
                 colour *= f;
-                weight *= max_of(f);
-                if (max_of(f) <= 0) return false;
+                weight *= std::max(max_of(f), 0.0);
                 interiors.toggle(hit.interior_id, hit.interior, hit.hollow);
                 ray.origin = hit.point;
                 passed = true;
@@ -233,13 +235,16 @@ private:
         out_.push_back(make_photon(p, colour * scale, towards_origin));
     }
 
-    // Reflection per texture layer and refraction through the surface, as eye rays take them
-    // (with no Fresnel loss on the refracted photon). adc_bailout cuts reflections by POV-Ray's
-    // weights, measured from its stored counts: a reflection is followed where the incoming
-    // weight times its reflectivity squared reaches adc_bailout, and every photon leaving the
-    // surface, reflected or refracted, carries the incoming weight times the reflectivities
-    // and the filter (so an internal reflection after a refraction needs r⁴·f² of it, and an
-    // opaque mirror's photons carry no weight on).
+    // Refraction through the surface and reflection per texture layer, as POV-Ray 3.7 traces
+    // photons (refraction first, no Fresnel loss on the refracted photon). A photon carries a
+    // weight, 1 from the light, and is dropped where its weight is below adc_bailout (probed
+    // with POV-Ray's stored counts: one refraction through filter f keeps f of the weight, one
+    // reflection of 0.1 keeps 0.01 of it). A layer's weight is the photon's times the layer's
+    // share of what came through the layers above; its reflection keeps that times the
+    // finish's reflection weight times the reflectivity's brightest channel, and carries the
+    // photon's colour times the reflectivity. The refracted photon keeps the weight times the
+    // filter's brightest channel. Total internal reflection takes the place of the reflections
+    // made with the top normal and keeps the unfiltered colour.
     void interact(const Ray& ray, const Hit& hit, const glm::dvec3& colour, double weight,
                   int level, double travelled, const InteriorList& interiors) const {
         const glm::dvec3 d = ray.dir;
@@ -257,15 +262,15 @@ private:
         const double eta = cross_interface(interiors, hit.interior_id, hit.interior, hit.hollow, beyond);
         const double fresnel_ior = fresnel_relative_ior(interiors, hit.interior_id, eta);
 
-        struct Pending {
-            glm::dvec3 dir, colour;
-            double r;
+        struct Reflection {
+            glm::dvec3 normal, colour;
+            double weight;
         };
-        Pending pending[ResolvedLayers::kMax];
-        int n_pending = 0;
-        double reflectivities = 1;
-        glm::dvec3 filter(1), top_normal = raw_n, top_reflectivity(0);
-        for (int i = 0; i < layers.count(); ++i) {
+        Reflection reflections[ResolvedLayers::kMax];
+        int n_reflections = 0;
+        glm::dvec3 filter(1), top_normal = raw_n;
+        double through = 1;  // grey of what the layers so far let through, at most 1
+        for (int i = 0; i < layers.count() && through > adc_; ++i) {
             const ResolvedLayer& layer = layers[i];
             const glm::dvec3 n = layer.normal ? framed_normal(*layer.normal, raw_n, layer.point,
                                                               layer.frame)
@@ -274,43 +279,46 @@ private:
             const scene::Colour& c = layer.colour;
             const Reflectivity r =
                 reflectivity(*layer.finish, -glm::dot(d, n), fresnel_ior, glm::dvec3(c.r, c.g, c.b));
-            if (i == 0) top_reflectivity = r.colour;
-            if (reflect && r.any()) {
+            if (r.any()) {
                 const double e = layer.finish->reflection_exponent;
                 glm::dvec3 reflected = colour;
                 if (e != 1 && e != 0)
                     reflected = glm::pow(glm::max(colour, glm::dvec3(0)), glm::dvec3(1 / e));
-                pending[n_pending++] = {reflect_direction(d, n, raw_n), reflected * r.colour * filter,
-                                        r.weight};
-                reflectivities *= r.weight;
+                reflections[n_reflections++] = {n, reflected * r.colour,
+                                                weight * through * r.weight * max_of(r.colour)};
             }
             filter *= layer_filter(c);
-            if (std::fabs(grey(filter)) <= adc_) break;
+            if (layer.finish->conserve_energy)
+                filter *= glm::min(glm::dvec3(1), glm::dvec3(1) - r.colour);
+            through = std::min(1.0, std::fabs(grey(filter)));
         }
-        glm::dvec3 f = filter;
-        const scene::Finish& top = *layers[0].finish;
-        if (top.conserve_energy) f *= glm::min(glm::dvec3(1), glm::dvec3(1) - top_reflectivity);
-        const double carried = weight * reflectivities * max_of(glm::abs(filter));
-        for (int i = 0; i < n_pending; ++i)
-            if (weight * pending[i].r * pending[i].r >= adc_)
-                trace(Ray{hit.point, pending[i].dir}, pending[i].colour, carried, level + 1,
-                      travelled, interiors);
-        if (!refract || !(std::min(1.0, std::fabs(grey(f))) > adc_)) return;
-        if (eta == 1.0) {
-            trace(Ray{hit.point, d}, colour * f, carried, level + 1, travelled, beyond);
-            return;
+        bool total_internal = false;
+        if (refract && through > adc_) {
+            const double w = weight * std::max(max_of(filter), 0.0);
+            if (eta == 1.0) {
+                trace(Ray{hit.point, d}, colour * filter, w, level + 1, travelled, beyond);
+            } else {
+                double cos_i = glm::dot(d, top_normal);
+                const glm::dvec3 ln = cos_i <= 0 ? top_normal : -top_normal;
+                cos_i = std::fabs(cos_i);
+                const double k = 1 + eta * eta * (cos_i * cos_i - 1);
+                total_internal = k < 0;
+                if (total_internal) {
+                    trace(Ray{hit.point, reflect_direction(d, top_normal, raw_n)}, colour, w,
+                          level + 1, travelled, interiors);
+                } else {
+                    const glm::dvec3 dir = glm::normalize(eta * d + (eta * cos_i - std::sqrt(k)) * ln);
+                    trace(Ray{hit.point, dir}, colour * filter, w, level + 1, travelled, beyond);
+                }
+            }
         }
-        double cos_i = glm::dot(d, top_normal);
-        const glm::dvec3 ln = cos_i <= 0 ? top_normal : -top_normal;
-        cos_i = std::fabs(cos_i);
-        const double k = 1 + eta * eta * (cos_i * cos_i - 1);
-        if (k < 0) {  // total internal reflection
-            trace(Ray{hit.point, reflect_direction(d, top_normal, raw_n)}, colour * f, carried,
+        if (!reflect) return;
+        for (int i = 0; i < n_reflections; ++i) {
+            const Reflection& r = reflections[i];
+            if (total_internal && r.normal == top_normal) continue;
+            trace(Ray{hit.point, reflect_direction(d, r.normal, raw_n)}, r.colour, r.weight,
                   level + 1, travelled, interiors);
-            return;
         }
-        const glm::dvec3 dir = glm::normalize(eta * d + (eta * cos_i - std::sqrt(k)) * ln);
-        trace(Ray{hit.point, dir}, colour * f, carried, level + 1, travelled, beyond);
     }
 
     const Geometry& geometry_;
