@@ -63,48 +63,94 @@ double refine_root(const double* c, int n, double a, double b, double fa) {
     return x;
 }
 
+// Roots are passed to a sink as they are found, lowest first; a sink that answers false stops
+// the search (a ray wants its nearest hit only, an inside test only how many there are).
+using RootSink = bool (*)(void* context, double root);
+
+bool each_root(const double* c, int n, double lo, double hi, bool refine, RootSink sink,
+               void* context);
+
+// The monotone pieces of a polynomial between consecutive breakpoints (lo, the critical
+// points in order, hi): each piece holds at most one root.
+struct PieceWalk {
+    const double* c;
+    int n;
+    double hi, prev, f_prev;
+    bool refine;
+    RootSink sink;
+    void* context;
+
+    bool step(double x) {
+        const double f = eval_poly(c, n, x);
+        bool go_on = true;
+        if (f == 0)
+            go_on = sink(context, x);
+        else if (f_prev != 0 && (f_prev < 0) != (f < 0))
+            go_on = sink(context, refine ? refine_root(c, n, prev, x, f_prev) : x);
+        prev = x;
+        f_prev = f;
+        return go_on;
+    }
+    static bool at_critical_point(void* walk, double x) {
+        PieceWalk& w = *static_cast<PieceWalk*>(walk);
+        if (!(x > w.prev && x < w.hi)) return true;
+        return w.step(x);
+    }
+};
+
+bool each_root(const double* c, int n, double lo, double hi, bool refine, RootSink sink,
+               void* context) {
+    while (n > 0 && c[n] == 0) --n;  // drop vanishing leading terms
+    if (n <= 0 || !(lo <= hi)) return true;
+    if (n == 1) {
+        const double t = -c[0] / c[1];
+        return !(t >= lo && t <= hi) || sink(context, t);
+    }
+    if (n == 2) {
+        double r[2];
+        const int k = solve_quadratic(c[2], 0.5 * c[1], c[0], r);
+        for (int i = 0; i < k; ++i)
+            if (r[i] >= lo && r[i] <= hi && !sink(context, r[i])) return false;
+        return true;
+    }
+    // The critical points come from the derivative's roots, found the same way, in order.
+    double deriv[8];
+    for (int i = 1; i <= n; ++i) deriv[i - 1] = c[i] * i;
+    PieceWalk walk{c, n, hi, lo, eval_poly(c, n, lo), refine, sink, context};
+    if (walk.f_prev == 0 && !sink(context, lo)) return false;
+    if (!each_root(deriv, n - 1, lo, hi, true, PieceWalk::at_critical_point, &walk)) return false;
+    return walk.step(hi);
+}
+
+struct RootList {
+    double* roots;
+    int count, max;
+    static bool add(void* list, double root) {
+        RootList& l = *static_cast<RootList*>(list);
+        l.roots[l.count++] = root;
+        return l.count < l.max;
+    }
+};
+
+bool count_one(void* count, double) {
+    ++*static_cast<int*>(count);
+    return true;
+}
+
 }  // namespace
 
 int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots,
                         int max_roots) {
-    while (n > 0 && c[n] == 0) --n;  // drop vanishing leading terms
-    if (n <= 0 || !(lo <= hi) || max_roots <= 0) return 0;
-    if (n == 1) {
-        double t = -c[0] / c[1];
-        if (t >= lo && t <= hi) { roots[0] = t; return 1; }
-        return 0;
-    }
-    if (n == 2) {
-        double r[2];
-        int k = solve_quadratic(c[2], 0.5 * c[1], c[0], r), m = 0;
-        for (int i = 0; i < k && m < max_roots; ++i)
-            if (r[i] >= lo && r[i] <= hi) roots[m++] = r[i];
-        return m;
-    }
-    // Breakpoints: lo, the critical points inside (lo, hi), hi.
-    double deriv[8], crit[8];
-    for (int i = 1; i <= n; ++i) deriv[i - 1] = c[i] * i;
-    int nc = solve_polynomial_in(deriv, n - 1, lo, hi, crit);
-    double pts[10];
-    int np = 0;
-    pts[np++] = lo;
-    for (int i = 0; i < nc; ++i)
-        if (crit[i] > pts[np - 1] && crit[i] < hi) pts[np++] = crit[i];
-    pts[np++] = hi;
+    if (max_roots <= 0) return 0;
+    RootList list{roots, 0, max_roots};
+    each_root(c, n, lo, hi, true, RootList::add, &list);
+    return list.count;
+}
 
-    int m = 0;
-    double fa = eval_poly(c, n, pts[0]);
-    if (fa == 0) roots[m++] = pts[0];
-    for (int i = 1; i < np && m < max_roots; ++i) {
-        double fb = eval_poly(c, n, pts[i]);
-        if (fb == 0) {
-            roots[m++] = pts[i];
-        } else if (fa != 0 && (fa < 0) != (fb < 0)) {
-            roots[m++] = refine_root(c, n, pts[i - 1], pts[i], fa);
-        }
-        fa = fb;
-    }
-    return m;
+int count_roots_in(const double* c, int n, double lo, double hi) {
+    int count = 0;
+    each_root(c, n, lo, hi, false, count_one, &count);
+    return count;
 }
 
 int significant_degree(const double* c, int n, double tiny) {

@@ -19,6 +19,10 @@ double eval_poly(const double* c, int n, double t);
 int solve_polynomial_in(const double* c, int n, double lo, double hi, double* roots,
                         int max_roots = 8);
 
+// How many roots solve_polynomial_in would return (with every max_roots), found without
+// refining them.
+int count_roots_in(const double* c, int n, double lo, double hi);
+
 // The degree of c (lowest power first) once the leading coefficients below `tiny` in
 // magnitude are dropped, as POV-Ray's polynomial solver drops them (an absolute test, so a
 // nearly degenerate cubic is solved as the quadratic or line it nearly is).

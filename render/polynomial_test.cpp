@@ -104,6 +104,32 @@ TEST(Polynomial, TheLowestRootsAloneAreTheFullSolvesFirst) {
     EXPECT_GT(several, 4000);
 }
 
+TEST(Polynomial, RootCountIsTheFullSolvesCount) {
+    // count_roots_in skips the refinement only: the same brackets, the same count, for every
+    // degree the shapes use, with roots at the interval's ends and tangent ones among them.
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> root(-1, 2), coefficient(-2, 2);
+    int with_roots = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const int n = 3 + i % 4;
+        std::vector<double> c(n + 1);
+        if (i % 3 == 0) {
+            std::vector<double> r(n);
+            for (double& v : r) v = root(rng);
+            if (i % 9 == 0) r[1] = r[0];  // a double root
+            if (i % 7 == 0) r[0] = 0;     // a root on the end
+            c = from_roots(r);
+        } else {
+            for (double& v : c) v = coefficient(rng);
+        }
+        double roots[8];
+        const int full = solve_polynomial_in(c.data(), n, 0, 1, roots);
+        ASSERT_EQ(count_roots_in(c.data(), n, 0, 1), full) << i;
+        with_roots += full > 0;
+    }
+    EXPECT_GT(with_roots, 5000);
+}
+
 TEST(Polynomial, AgreesWithBruteForceScan) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> coef(-10, 10);

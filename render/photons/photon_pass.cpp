@@ -369,7 +369,10 @@ void shoot_ring(const Geometry& geometry, const Combo& c, size_t combo_index, si
             origin = l.position;
         }
         const double beam = beam_factor(l, origin + dir);
-        if (beam < 1e-5) continue;
+        if (beam < 1e-5) {  // outside a spotlight's cone: counted as shot, as POV-Ray counts
+            out.shot += c.copies;
+            continue;
+        }
         const glm::dvec3 colour = l.colour * beam / double(c.copies);
         // Copies from an area light's grid: only the middle one's hit counts for autostop
         // (measured: POV-Ray's shot counts then match).

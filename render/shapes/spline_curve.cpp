@@ -65,6 +65,11 @@ bool inside_curve(const Curve& curve, const glm::dvec2& q, double y_pad) {
         double c[4];
         s.coefficients(1, c);
         c[0] -= q.y;
+        if (q.x < s.lo.x - 1e-9 * (1 + std::abs(s.lo.x))) {
+            // Every crossing lies to the right: only their number matters.
+            count += count_roots_in(c, significant_degree(c, 3), 0, 1);
+            continue;
+        }
         double w[3];
         const int n = solve_significant_in(c, 3, 0, 1, w);
         for (int i = 0; i < n; ++i)
