@@ -53,6 +53,15 @@ TEST(Photons, ShotCountsArePovRays) {
     EXPECT_EQ(shoot(scene_with("spacing 0.01 radius 0.05", kParallel)).shot, 8332u);
     EXPECT_EQ(shoot(scene_with("spacing 0.01", kPoint)).shot, 8326u);
     EXPECT_EQ(shoot(scene_with("count 20000", kPoint)).shot, 13880u);  // spacing from count
+    // A spotlight narrower than the target: photons outside its cone count as shot (POV-Ray
+    // printed 6217 shot, 3463 stored).
+    const Shot spot = shoot(
+        "global_settings { photons { spacing 0.02 } }\n"
+        "light_source { <0, 10, 0> rgb 1 spotlight point_at <0, 0, 0> radius 2 falloff 3 }\n"
+        "sphere { <0, 1, 0>, 1 pigment { rgbf 1 } interior { ior 1.5 } photons { target refraction on } }\n"
+        "plane { y, 0 pigment { rgb 1 } }\n");
+    EXPECT_EQ(spot.shot, 6217u);
+    EXPECT_EQ(spot.stored, 3463u);
     // target 0.5 halves the spacing: about four times the photons.
     const Shot half = shoot(scene_with("spacing 0.01", kPoint, "target 0.5 refraction on"));
     EXPECT_NEAR(double(half.shot) / 8326, 4.0, 0.2);
