@@ -279,7 +279,7 @@ private:
             const scene::Colour& c = layer.colour;
             const Reflectivity r =
                 reflectivity(*layer.finish, -glm::dot(d, n), fresnel_ior, glm::dvec3(c.r, c.g, c.b));
-            if (r.any()) {
+            if (reflect && r.any()) {
                 const double e = layer.finish->reflection_exponent;
                 glm::dvec3 reflected = colour;
                 if (e != 1 && e != 0)
