@@ -1,5 +1,8 @@
 // CSG operations and modifiers with answers worked out by hand.
 #include <cmath>
+#include <random>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -197,6 +200,50 @@ TEST(Csg, NestedWithTransforms) {
     EXPECT_NEAR(h->t, 0.5, 1e-9);
     EXPECT_NEAR(h->normal.x, -1, 1e-9);
     EXPECT_TRUE(Geometry::inside(*u, {0.8, 0, -10}));
+}
+
+TEST(Csg, RetriesAlongARayGetTheAnswersOfFreshTraces) {
+    // Nested CSG (a merge of differences, one inside an intersection with a union of
+    // several) asks its members again and again along one ray; the answers a thread remembers
+    // must be those a fresh trace gives. Every surface along 300 random rays, walked from hit to
+    // hit on this thread, against each step traced alone on a new thread.
+    std::vector<scene::ObjectPtr> spheres;
+    for (int i = 0; i < 6; ++i)
+        spheres.push_back(make(scene::Sphere{{-1.2 + 0.5 * i, 0.1 * i, 0}, 0.3}));
+    auto shells = csg(CsgOp::Union, spheres);
+    auto ring = csg(CsgOp::Difference, {make(scene::Sphere{{0, 0, 0}, 1.5}),
+                                        make(scene::Sphere{{0, 0, 0}, 1.3})});
+    auto cut = csg(CsgOp::Intersection, {ring, make(scene::Box{{-2, -0.4, -2}, {2, 0.4, 2}})});
+    auto both = csg(CsgOp::Merge, {cut, csg(CsgOp::Difference, {make(scene::Box{{-1.6, -0.2, -0.5}, {1.6, 0.2, 0.5}}), shells})});
+    Geometry g(scene_of({both}));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int surfaces = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Ray r = ray({1.5 * u(rng), 0.3 * u(rng), -4}, {0.2 * u(rng), 0.05 * u(rng), 1});
+        std::vector<double> walked, fresh;
+        for (double from = 1e-4;;) {
+            const auto h = trace(g, r, false, from);
+            if (!h) break;
+            walked.push_back(h->t);
+            from = h->t;
+            if (walked.size() > 64) break;
+        }
+        std::thread([&] {
+            double from = 1e-4;
+            for (size_t k = 0; k <= walked.size(); ++k) {
+                // A different ray between the steps, so nothing is remembered for this one.
+                trace(g, ray({0, 0, -4}, {0.01 * double(k), 0, 1}));
+                const auto h = trace(g, r, false, from);
+                if (!h) break;
+                fresh.push_back(h->t);
+                from = h->t;
+            }
+        }).join();
+        ASSERT_EQ(walked, fresh) << "ray " << i;
+        surfaces += int(walked.size());
+    }
+    EXPECT_GT(surfaces, 300);
 }
 
 }  // namespace
