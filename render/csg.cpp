@@ -5,6 +5,7 @@
 // nodes again and again along the same ray; a small per-thread table remembers each one's last
 // answer (see NodeMemo).
 #include <array>
+#include <atomic>
 #include <cmath>
 
 #include "render/node.hpp"
@@ -77,7 +78,7 @@ inline bool intersect_primitive(const NodeStore& store, const Node& n, uint32_t 
 // (advanced/grenadine's lemon slice asked its prisms 230 times a ray). Exact: the answer is
 // the one a new trace would give.
 struct NodeMemo {
-    const NodeStore* store = nullptr;
+    uint64_t store = 0;  // the store's serial
     uint32_t index = 0;
     bool shadow = false, found = false;
     glm::dvec3 origin{0}, dir{0};
@@ -85,7 +86,8 @@ struct NodeMemo {
     NodeHit hit;
 
     bool same_query(const NodeStore& s, uint32_t i, const Ray& ray, bool sh) const {
-        return store == &s && index == i && shadow == sh && origin == ray.origin && dir == ray.dir;
+        return store == s.serial && index == i && shadow == sh && origin == ray.origin &&
+               dir == ray.dir;
     }
     // Whether the answer for (tmin, tmax') is known, and then the answer.
     bool answers(double tmin, double t_max, bool& result, NodeHit& out) const {
@@ -117,7 +119,8 @@ bool intersect_member(const NodeStore& store, uint32_t index, const Ray& ray, do
         return result;
     result = intersect_node(store, index, ray, tmin, tmax, shadow, hit, false);
     // The slot may have been taken by an inner member meanwhile: it is filled afresh.
-    memo_slot(index) = NodeMemo{&store, index, shadow, result, ray.origin, ray.dir, tmin, tmax, hit};
+    memo_slot(index) =
+        NodeMemo{store.serial, index, shadow, result, ray.origin, ray.dir, tmin, tmax, hit};
     return result;
 }
 
@@ -170,6 +173,11 @@ bool intersect_clipped(const NodeStore& store, const Node& n, uint32_t index, co
 }
 
 }  // namespace
+
+uint64_t next_store_serial() {
+    static std::atomic<uint64_t> next{1};
+    return next++;
+}
 
 bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, double tmin,
                     double tmax, bool shadow, NodeHit& hit, bool any) {

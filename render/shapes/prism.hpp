@@ -1,6 +1,7 @@
 // prism: a spline outline in the xz plane swept along y between two heights, straight up
 // (linear_sweep) or as a cone from the origin (conic_sweep), capped unless open.
 #pragma once
+#include <cstdint>
 #include "render/shapes/shape.hpp"
 #include "render/shapes/spline_curve.hpp"
 
@@ -12,6 +13,7 @@ struct PrismShape {
     bool conic = false, open = false;
     bool valid = false;  // an unclosed or degenerate outline is never hit
     Aabb box;
+    uint64_t serial = 0;  // no other prism made in this run has it (prism.cpp's last-ray hits)
 };
 
 PrismShape make_prism(const scene::Prism& p);

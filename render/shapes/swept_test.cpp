@@ -1,6 +1,7 @@
 // prism, lathe and sor: hits where POV-Ray puts them, and the rays that strain the solvers:
 // parallel to the sweep or the axis, grazing walls, through cap edges, far away.
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,48 @@ scene::Lathe tube() {
     scene::Lathe l;
     l.points = {{1, 0}, {1, 1}};
     return l;
+}
+
+TEST(Prism, EveryHitAlongARayAsIfTracedAlone) {
+    // A prism keeps its last ray's hits for the asks that follow on that ray (CSG retries).
+    // Walking every surface from hit to hit must give what each step traced alone gives, and a
+    // prism made later, wherever it lies in memory, must not answer with an earlier one's hits.
+    auto walk = [](const Geometry& g, const Ray& r) {
+        std::vector<double> ts;
+        for (double from = 1e-4; ts.size() < 16;) {
+            const auto h = trace(g, r, false, from);
+            if (!h) break;
+            ts.push_back(h->t);
+            from = h->t;
+        }
+        return ts;
+    };
+    const Ray through = ray({-2, 0.5, 0.1}, {1, 0.05, 0});  // outer wall, hole, hole, outer wall
+    std::vector<double> walked;
+    {
+        Geometry g(scene_of({make(square_with_hole())}));
+        walked = walk(g, through);
+        ASSERT_EQ(walked.size(), 4u);
+        for (size_t k = 0; k < walked.size(); ++k) {
+            Geometry fresh(scene_of({make(square_with_hole())}));  // a new prism: nothing kept
+            const auto h = trace(fresh, through, false, k == 0 ? 1e-4 : walked[k - 1]);
+            ASSERT_TRUE(h);
+            EXPECT_EQ(h->t, walked[k]) << k;
+        }
+    }
+    for (int i = 0; i < 20; ++i) {
+        // Prisms come and go, each taller than the last, and the same ray falls on each top.
+        scene::Prism p = square_with_hole();
+        p.height2 = 1 + 0.05 * (i + 1);
+        Geometry g(scene_of({make(p)}));
+        const auto down = ray({0.3, 3, 0.1}, {0, -1, 0});
+        const auto top = trace(g, down);
+        ASSERT_TRUE(top);
+        EXPECT_NEAR(top->t, 3 - p.height2, 1e-12) << i;
+        const auto after = trace(g, down, false, top->t);  // the base, from within
+        ASSERT_TRUE(after);
+        EXPECT_NEAR(after->t, 3, 1e-12) << i;
+    }
 }
 
 TEST(Lathe, RaysAcrossTheAxisSolveTheCircle) {
