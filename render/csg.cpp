@@ -159,19 +159,6 @@ bool intersect_unclipped(const NodeStore& store, uint32_t index, const Ray& ray,
     return found;
 }
 
-bool intersect_clipped(const NodeStore& store, const Node& n, uint32_t index, const Ray& ray,
-                       double tmin, double tmax, bool shadow, NodeHit& hit, bool any) {
-    double from = tmin;
-    for (int tries = 0; tries < kMaxRejected &&
-                        intersect_unclipped(store, index, ray, from, tmax, shadow, hit, any);
-         ++tries) {
-        if (n.clip_count == 0 || inside_all(store, n.clips, n.clip_count, ray.at(hit.shape.t)))
-            return true;
-        from = hit.shape.t;
-    }
-    return false;
-}
-
 }  // namespace
 
 uint64_t next_store_serial() {
@@ -188,7 +175,15 @@ bool intersect_node(const NodeStore& store, uint32_t index, const Ray& ray, doub
     if (n.bound_count && !ray_meets_bounds(store, n, ray)) return false;
     // Clipped: the retries from a clipped-away hit need the nearest one.
     any = any && n.clip_count == 0;
-    return intersect_clipped(store, n, index, ray, tmin, tmax, shadow, hit, any);
+    double from = tmin;
+    for (int tries = 0; tries < kMaxRejected &&
+                        intersect_unclipped(store, index, ray, from, tmax, shadow, hit, any);
+         ++tries) {
+        if (n.clip_count == 0 || inside_all(store, n.clips, n.clip_count, ray.at(hit.shape.t)))
+            return true;
+        from = hit.shape.t;
+    }
+    return false;
 }
 
 bool inside_node(const NodeStore& store, uint32_t index, const glm::dvec3& p) {
