@@ -20,6 +20,10 @@ struct AxialSearch {
     glm::dvec3 P, D;
     double len, k_min, best;
     SlabRay slab;
+    double t_min, t_max;  // the caller's range, in its ray's units
+    // Whether distance k lies in the caller's range: k / len is what the caller gets, and k >
+    // t_min len need not say that k / len > t_min (an ask from a hit got the same hit back).
+    bool in_range(double k) const { return k / len > t_min && k / len < t_max; }
     // Empty when the ray has no direction or misses the padded box within [tmin, tmax].
     static std::optional<AxialSearch> start(const LocalRay& r, const Aabb& box, double tmin,
                                             double tmax) {
@@ -30,7 +34,7 @@ struct AxialSearch {
         double enter, exit;
         if (!slab.hits(padded_box(box), tmin * len, tmax * len, enter, exit)) return std::nullopt;
         return AxialSearch{r.o, D, len, tmin * len,
-                           std::min(tmax * len, exit * (1 + 1e-9) + 1e-9), slab};
+                           std::min(tmax * len, exit * (1 + 1e-9) + 1e-9), slab, tmin, tmax};
     }
 };
 

@@ -64,7 +64,7 @@ bool intersect(const LatheShape& s, const LocalRay& r, double tmin, double tmax,
     double along = 0;  // segment index + spline parameter of the best hit (uv_mapping's v)
     double index = 0;
     auto offer = [&](double k, const CurveSegment& seg, double w) {
-        if (!(k > k_min && k < best)) return;
+        if (!(k > k_min && k < best && search->in_range(k))) return;
         best = k;
         found = true;
         normal = lathe_normal(seg, w, P + k * D);

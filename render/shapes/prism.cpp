@@ -38,13 +38,15 @@ Aabb padded(Aabb b) {
     return {b.lo - pad, b.hi + pad};
 }
 
-// A hit being kept: the object distance k along the unit direction, and its normal.
+// A hit being kept: the object distance k along the unit direction, and its normal. The
+// caller's range is (t_min, ...) in its ray's units, k = t len: a hit is beyond t_min when
+// k / len is, which k > t_min len need not tell (a search from a hit found the same hit again).
 struct Nearest {
-    double k_min, k;
+    double k_min, k, t_min, len;
     glm::dvec3 normal{0};
     bool found = false;
     void offer(double at, const glm::dvec3& n) {
-        if (!(at > k_min && at < k)) return;
+        if (!(at > k_min && at < k && at / len > t_min)) return;
         k = at;
         normal = n;
         found = true;
@@ -138,12 +140,13 @@ struct AllHits {
         at[count] = a;
         normal[count++] = n;
     }
-    bool nearest(double lo, double hi, double& best_k, glm::dvec3& best_n) const {
+    // The nearest in (lo, hi) in the units of a ray of direction length len (see Nearest).
+    bool nearest(double lo, double hi, double len, double& best_t, glm::dvec3& best_n) const {
         bool found = false;
         for (int i = 0; i < count; ++i)
-            if (at[i] > lo && at[i] < hi) {
-                hi = at[i];
-                best_k = at[i];
+            if (const double t = at[i] / len; t > lo && t < hi) {
+                hi = t;
+                best_t = t;
                 best_n = normal[i];
                 found = true;
             }
@@ -186,12 +189,12 @@ bool intersect(const PrismShape& s, const LocalRay& r, double tmin, double tmax,
     if (!(len > 0)) return false;
     const glm::dvec3 D = r.d / len, P = r.o;
     thread_local LastPrismRay last;
-    double k = 0;
+    double t = 0;
     glm::dvec3 normal;
     if (last.prism == s.serial && last.o == r.o && last.d == r.d && !last.hits.overflow &&
         last.hits.k_min <= tmin * len) {
-        if (!last.hits.nearest(tmin * len, tmax * len, k, normal)) return false;
-        h.t = k / len;
+        if (!last.hits.nearest(tmin, tmax, len, t, normal)) return false;
+        h.t = t;
         h.normal = normal;
         return true;
     }
@@ -210,7 +213,7 @@ bool intersect(const PrismShape& s, const LocalRay& r, double tmin, double tmax,
     hit_walls(s, P, D, last.hits);
     if (last.hits.overflow) {  // too many to keep: the nearest alone
         last.prism = 0;
-        Nearest best{tmin * len, std::min(tmax * len, exit * (1 + 1e-9) + 1e-9)};
+        Nearest best{tmin * len, std::min(tmax * len, exit * (1 + 1e-9) + 1e-9), tmin, len};
         hit_caps(s, P, D, best);
         hit_walls(s, P, D, best);
         if (!best.found) return false;
@@ -218,8 +221,8 @@ bool intersect(const PrismShape& s, const LocalRay& r, double tmin, double tmax,
         h.normal = best.normal;
         return true;
     }
-    if (!last.hits.nearest(tmin * len, tmax * len, k, normal)) return false;
-    h.t = k / len;
+    if (!last.hits.nearest(tmin, tmax, len, t, normal)) return false;
+    h.t = t;
     h.normal = normal;
     return true;
 }

@@ -89,7 +89,7 @@ bool intersect(const SorShape& s, const LocalRay& r, double tmin, double tmax, S
     bool found = false;
     double v = 0;  // uv_mapping's v of the best hit: the sides 0..1, base -1..0, cap 1..2
     auto offer = [&](double k, const glm::dvec3& n, double along) {
-        if (!(k > k_min && k < best)) return;
+        if (!(k > k_min && k < best && search->in_range(k))) return;
         best = k;
         normal = n;
         v = along;

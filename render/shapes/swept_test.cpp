@@ -1,6 +1,7 @@
 // prism, lathe and sor: hits where POV-Ray puts them, and the rays that strain the solvers:
 // parallel to the sweep or the axis, grazing walls, through cap edges, far away.
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -177,6 +178,32 @@ TEST(Prism, EveryHitAlongARayAsIfTracedAlone) {
         ASSERT_TRUE(after);
         EXPECT_NEAR(after->t, 3, 1e-12) << i;
     }
+}
+
+TEST(Prism, AWalkFromHitToHitUnderAScaleMovesOn) {
+    // A prism traces along its normalised object ray (k = t |d|): asked again from the t of a
+    // hit, k / |d| rounded back above the ask must not hand the same hit back (the ask after
+    // it got that hit over and over: 1024 times a ray in advanced/grenadine's lemon slice).
+    const auto o = make(square_with_hole(),
+                        from_matrix(glm::rotate(glm::scale(glm::dmat4(1.0), {3.3, 0.7, 1.9}),
+                                                0.4, glm::dvec3(0.2, 1, 0.3))));
+    Geometry g(scene_of({o}));
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Ray r = ray({1.5 * u(rng), 1.5 * u(rng), -9}, {0.2 * u(rng), 0.2 * u(rng), 1});
+        double from = 1e-4;
+        for (int k = 0; k < 12; ++k) {
+            const auto h = trace(g, r, false, from);
+            if (!h) break;
+            ASSERT_GT(h->t, from) << "ray " << i << " step " << k;
+            from = h->t;
+            ++hits;
+            ASSERT_LT(k, 8) << "ray " << i << ": more walls than the outline has";
+        }
+    }
+    EXPECT_GT(hits, 1000);
 }
 
 TEST(Lathe, RaysAcrossTheAxisSolveTheCircle) {
