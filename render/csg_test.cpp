@@ -1,5 +1,6 @@
 // CSG operations and modifiers with answers worked out by hand.
 #include <cmath>
+#include <optional>
 #include <random>
 #include <thread>
 #include <vector>
@@ -200,6 +201,68 @@ TEST(Csg, NestedWithTransforms) {
     EXPECT_NEAR(h->t, 0.5, 1e-9);
     EXPECT_NEAR(h->normal.x, -1, 1e-9);
     EXPECT_TRUE(Geometry::inside(*u, {0.8, 0, -10}));
+}
+
+TEST(Csg, EveryHitIsWhereInsideChangesAndNowhereElse) {
+    // Merges, intersections and differences of transformed shapes (a prism and a torus among
+    // them: shapes that work in their own units), nested three deep, have a surface exactly
+    // where the point test's answer changes. Walking each ray from hit to hit, the answer must
+    // flip at every hit and stay the same at sampled points between them: a hit list that
+    // drops a member's hit, keeps a rejected one or repeats one fails it.
+    scene::Prism wedge;
+    wedge.points = {{0, 0}, {1, -0.3}, {1, 0.3}, {0, 0}};
+    auto shell = csg(CsgOp::Difference, {make(scene::Box{{-1, -1, -1}, {1, 1, 1}}),
+                                         make(scene::Sphere{{0, 0, 0}, 1.2})});
+    auto ring = csg(CsgOp::Intersection,
+                    {make(scene::Torus{1.1, 0.35, false}, scale({1, 1.6, 1})),
+                     make(scene::Cylinder{{0, -2, 0}, {0, 2, 0}, 1.3, false}),
+                     make(wedge, scale({1.6, 0.8, 1.6}).then(rotate(30, {1, 0.2, 0})))});
+    auto cut = csg(CsgOp::Difference,
+                   {csg(CsgOp::Merge, {shell, ring}),
+                    make(scene::Box{{-0.3, -2, -0.3}, {0.3, 2, 0.3}}, rotate(25, {0, 1, 1}))});
+    Geometry g(scene_of({cut}));
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int surfaces = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray r = ray({1.4 * u(rng), 1.4 * u(rng), -5}, {0.3 * u(rng), 0.3 * u(rng), 1});
+        const auto in = [&](double t) { return Geometry::inside(*cut, r.at(t)); };
+        std::vector<double> ts{1e-4};
+        while (ts.size() < 32) {
+            const auto h = trace(g, r, false, ts.back());
+            if (!h) break;
+            ASSERT_GT(h->t, ts.back()) << "ray " << i;
+            ts.push_back(h->t);
+        }
+        surfaces += int(ts.size()) - 1;
+        ts.push_back(12.0);
+        // Between hits the answer is the same throughout, and it flips across each odd number
+        // of hits, except across hits a few ulps apart (a ray passing near an edge).
+        int crossed = 0;
+        bool cluster = false;  // the point test cannot tell in which order those are met
+        std::optional<bool> before;
+        for (size_t k = 0; k + 1 < ts.size(); ++k) {
+            if (k > 0) ++crossed;
+            if (!(ts[k + 1] - ts[k] > 1e-9)) {
+                cluster = true;
+                continue;
+            }
+            const bool state = in(0.5 * (ts[k] + ts[k + 1]));
+            for (int s = 1; s < 8; ++s)
+                ASSERT_EQ(in(ts[k] + (ts[k + 1] - ts[k]) * s / 8.0), state)
+                    << "ray " << i << ": a surface missed between " << ts[k] << " and "
+                    << ts[k + 1];
+            if (before && !cluster) {
+                ASSERT_EQ(state != *before, crossed % 2 == 1)
+                    << "ray " << i << ": no change of inside across " << crossed
+                    << " hit(s) up to " << ts[k];
+            }
+            before = state;
+            crossed = 0;
+            cluster = false;
+        }
+    }
+    EXPECT_GT(surfaces, 2000);
 }
 
 TEST(Csg, RetriesAlongARayGetTheAnswersOfFreshTraces) {

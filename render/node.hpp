@@ -47,12 +47,7 @@ struct Node {
     bool global_lights = true; // the scene's lights reach it (node_compile: group_inside)
 };
 
-// A number no other store has had in this run: what remembers answers about a store's nodes
-// (csg.cpp) tells stores apart by it, not by address, which a later store may reuse.
-uint64_t next_store_serial();
-
 struct NodeStore {
-    uint64_t serial = next_store_serial();
     std::vector<Node> nodes;
     std::vector<uint32_t> links;
     std::vector<ShapeData> shapes;
