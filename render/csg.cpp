@@ -72,6 +72,18 @@ inline bool intersect_primitive(const NodeStore& store, const Node& n, uint32_t 
     return true;
 }
 
+// A primitive's nearest hit strictly beyond `from`: one that a shape working in its own
+// units rounds back onto `from` (the hit asked from) is asked for again an ulp further.
+bool next_primitive_hit(const NodeStore& store, const Node& n, uint32_t index, const Ray& ray,
+                        double from, double hi, bool shadow, NodeHit& h) {
+    for (int nudges = 0; nudges < 64; ++nudges) {
+        if (!intersect_primitive(store, n, index, ray, from, hi, shadow, h)) return false;
+        if (h.shape.t > from) return true;
+        from = std::nextafter(from, hi);
+    }
+    return false;
+}
+
 // The thread's stack of hit lists: a list is built above those of the calls it is nested in
 // and popped when its caller is done with it (kept by index: the stack may grow meanwhile).
 std::vector<NodeHit>& hit_stack() {
@@ -142,19 +154,10 @@ void collect_hits(const NodeStore& store, uint32_t index, const Ray& ray, double
     if (check_bounds && n.bound_count && !ray_meets_bounds(store, n, ray)) return;
     if (n.kind == NodeKind::Shape) {
         NodeHit h;
-        double from = lo;
-        for (size_t asks = 0; asks < kMaxListed &&
-                              intersect_primitive(store, n, index, ray, from, hi, shadow, h);
-             ++asks) {
-            // A shape working in its own units may round the hit searched from back to
-            // itself: that one is listed already, look an ulp further.
-            if (!(h.shape.t > from)) {
-                from = std::nextafter(from, hi);
-                continue;
-            }
+        for (double from = lo; out.size() - base < kMaxListed &&
+                               next_primitive_hit(store, n, index, ray, from, hi, shadow, h);
+             from = h.shape.t)
             out.push_back(h);
-            from = h.shape.t;
-        }
     } else {
         const SlabRay slab(ray.origin, ray.dir);
         const MemberRanges ranges(store, n, slab, lo, hi);
@@ -201,7 +204,7 @@ bool nearest_of_union(const NodeStore& store, const Node& n, const Ray& ray, dou
     return found;
 }
 
-// The nearest hit of a merge or intersection: each member's list up to the best hit so far,
+// The nearest hit of a merge or intersection: each member's hits up to the best so far,
 // tested in order until the operation accepts one (`any`: the first member's accepted hit).
 bool nearest_of_members(const NodeStore& store, const Node& n, const Ray& ray, double tmin,
                         double tmax, bool shadow, NodeHit& hit, bool any) {
@@ -217,6 +220,22 @@ bool nearest_of_members(const NodeStore& store, const Node& n, const Ray& ray, d
         ranges.narrow(i, from, to);
         if (!(from < to) || box.empty() || (box.finite() && !slab.hits(box, from, to)))
             continue;
+        const Node& member = store.nodes[c];
+        if (member.kind == NodeKind::Shape && member.clip_count == 0 && member.bound_count == 0) {
+            // A plain primitive is walked hit by hit: its first hit is often the one kept.
+            NodeHit h;
+            size_t asks = 0;
+            for (double at = from; asks++ < kMaxListed &&
+                                   next_primitive_hit(store, member, c, ray, at, to, shadow, h);
+                 at = h.shape.t)
+                if (csg_accepts(store, n, i, ray.at(h.shape.t))) {
+                    hit = h;
+                    best = h.shape.t;
+                    found = true;
+                    break;
+                }
+            continue;
+        }
         const size_t first = stack.size();
         collect_hits(store, c, ray, from, to, shadow, true, stack);
         for (size_t k = first; k < stack.size(); ++k)
