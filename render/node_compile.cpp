@@ -229,7 +229,14 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
         node.shape = uint32_t(store.shapes.size());
         store.shapes.push_back(std::move(data));
     }
-    if (node.inverse) node.solid = Aabb::everything();
+    if (node.inverse) {
+        // Inverted, a shape may be inside anywhere, but for a plane along an axis: the other
+        // half-space, which bounds the members of a difference that subtracts it.
+        const PlaneShape* plane = node.kind == NodeKind::Shape && node.identity
+                                      ? std::get_if<PlaneShape>(&store.shapes[node.shape])
+                                      : nullptr;
+        node.solid = plane ? complement_solid_bounds(*plane) : Aabb::everything();
+    }
     for (uint32_t c : clips) {
         node.surface = intersect(node.surface, store.nodes[c].solid);
         node.solid = intersect(node.solid, store.nodes[c].solid);

@@ -46,6 +46,18 @@ Aabb solid_bounds(const PlaneShape& s) {
     return box;
 }
 
+Aabb complement_solid_bounds(const PlaneShape& s) {
+    Aabb box = Aabb::everything();
+    if (!s.valid) return box;  // never inside: inverted, inside everywhere
+    for (int a = 0; a < 3; ++a) {
+        if (s.normal[(a + 1) % 3] != 0 || s.normal[(a + 2) % 3] != 0) continue;
+        // Inverted, inside is n·p - d >= 1e-10: one bound along this axis (with room to spare).
+        if (s.normal[a] > 0) box.lo[a] = s.distance - 1e-10;
+        else box.hi[a] = -s.distance + 1e-10;
+    }
+    return box;
+}
+
 // Any affine map keeps a plane a plane.
 bool ShapeTraits<scene::Plane>::bake(const scene::Plane& p, const scene::Transform& xf,
                                      PlaneShape& out) {

@@ -11,6 +11,8 @@ bool inside(const PlaneShape& s, const glm::dvec3& p);
 Aabb bounds(const PlaneShape& s);
 // The half-space's box: bounded on one side where the normal lies along an axis, else infinite.
 Aabb solid_bounds(const PlaneShape& s);
+// The same for the plane inverted: the other half-space (a difference's `plane { y, 0 }`).
+Aabb complement_solid_bounds(const PlaneShape& s);
 
 template <> struct ShapeTraits<scene::Plane> : PreparedBy<scene::Plane, PlaneShape, make_plane> {
     static bool bake(const scene::Plane& p, const scene::Transform& xf, PlaneShape& out);

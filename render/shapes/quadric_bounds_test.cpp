@@ -145,5 +145,44 @@ TEST(QuadricBounds, AnIntersectionOfACylinderAndPlanesGetsAFiniteBox) {
     EXPECT_FALSE(testing::trace(g, testing::ray({-5, 9, 2.5}, {1, 0, 0})));
 }
 
+TEST(PlaneBounds, ASubtractedPlaneCutsTheDifferenceToTheOtherHalfSpace) {
+    using testing::csg;
+    using testing::make;
+    // advanced/abyss's hull: difference { blob plane { y, 0 } plane { z, 0 inverse } }, one
+    // octant of the blob each. Subtracted, plane { y, 0 } leaves y >= 0; inverted twice,
+    // plane { z, 0 inverse } leaves z <= 0 (the points within 1e-10 of a plane count as
+    // inside it, so the bounds sit on the planes).
+    const auto part = csg(scene::CsgOp::Difference,
+                          {make(scene::Sphere{{0, 0, 0}, 2}), make(scene::Plane{{0, 1, 0}, 0}),
+                           [] {
+                               auto p = make(scene::Plane{{0, 0, 1}, 0});
+                               p->inverse = true;
+                               return p;
+                           }()});
+    NodeStore store;
+    const Node& node = store.nodes[compile_object(store, *part, NodeContext{})];
+    ASSERT_TRUE(node.surface.finite());
+    EXPECT_NEAR(node.surface.lo.y, 0, 1e-9);
+    EXPECT_NEAR(node.surface.hi.y, 2, 1e-5);
+    EXPECT_NEAR(node.surface.hi.z, 0, 1e-9);
+    EXPECT_NEAR(node.surface.lo.z, -2, 1e-5);
+    const Aabb half = complement_solid_bounds(make_plane(scene::Plane{{0, -1, 0}, 3}));  // y <= -3
+    EXPECT_NEAR(half.hi.y, -3, 1e-9);
+    EXPECT_EQ(half.lo.y, -Aabb::inf);
+    EXPECT_FALSE(complement_solid_bounds(make_plane(scene::Plane{{1, 1, 0}, 0})).finite());
+    // The same hits as without the bound: the sphere's octant and the flat faces.
+    const Geometry g(testing::scene_of({part}));
+    auto top = testing::trace(g, testing::ray({0.5, 5, -0.5}, {0, -1, 0}));
+    ASSERT_TRUE(top);
+    EXPECT_NEAR(top->t, 5 - std::sqrt(4 - 0.5), 1e-9);
+    auto floor = testing::trace(g, testing::ray({0.5, -5, -0.5}, {0, 1, 0}));
+    ASSERT_TRUE(floor);
+    EXPECT_NEAR(floor->t, 5, 1e-9);
+    auto face = testing::trace(g, testing::ray({0.5, 0.5, 5}, {0, 0, -1}));
+    ASSERT_TRUE(face);
+    EXPECT_NEAR(face->t, 5, 1e-9);
+    EXPECT_FALSE(testing::trace(g, testing::ray({0.5, 5, 0.5}, {0, -1, 0})));
+}
+
 }  // namespace
 }  // namespace lumen::render
