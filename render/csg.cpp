@@ -1,10 +1,11 @@
 // Intersection and inside tests over compiled nodes: primitives, union, merge, intersection
 // (difference = intersection with inverted subtrahends), clipped_by and bounded_by.
-// A union asks its members for their nearest hits. A merge or intersection takes each
+// A union asks its members for their nearest hits. A merge or intersection takes each CSG
 // member's list of every hit along the ray (POV-Ray's depth lists) and keeps those the
-// operation accepts: asking a member again from beyond each rejected hit instead re-traced
-// nested CSG once per rejection (advanced/grenadine's lemon slice: 235 primitive traces a ray
-// against POV-Ray's 60). The lists live on a per-thread stack, so nothing is allocated per ray.
+// operation accepts: asking such a member again from beyond each rejected hit instead
+// re-traced nested CSG once per rejection (advanced/grenadine's lemon slice: 235 primitive
+// traces a ray against POV-Ray's 60). A plain primitive member is asked hit by hit. The lists
+// live on a per-thread stack, so nothing is allocated per ray.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -220,31 +221,29 @@ bool nearest_of_members(const NodeStore& store, const Node& n, const Ray& ray, d
         ranges.narrow(i, from, to);
         if (!(from < to) || box.empty() || (box.finite() && !slab.hits(box, from, to)))
             continue;
+        const auto kept = [&](const NodeHit& h) {
+            if (!csg_accepts(store, n, i, ray.at(h.shape.t))) return false;
+            hit = h;
+            best = h.shape.t;
+            found = true;
+            return true;
+        };
         const Node& member = store.nodes[c];
         if (member.kind == NodeKind::Shape && member.clip_count == 0 && member.bound_count == 0) {
             // A plain primitive is walked hit by hit: its first hit is often the one kept.
             NodeHit h;
             size_t asks = 0;
             for (double at = from; asks++ < kMaxListed &&
-                                   next_primitive_hit(store, member, c, ray, at, to, shadow, h);
-                 at = h.shape.t)
-                if (csg_accepts(store, n, i, ray.at(h.shape.t))) {
-                    hit = h;
-                    best = h.shape.t;
-                    found = true;
-                    break;
-                }
+                                   next_primitive_hit(store, member, c, ray, at, to, shadow, h) &&
+                                   !kept(h);
+                 at = h.shape.t) {
+            }
             continue;
         }
         const size_t first = stack.size();
         collect_hits(store, c, ray, from, to, shadow, true, stack);
-        for (size_t k = first; k < stack.size(); ++k)
-            if (csg_accepts(store, n, i, ray.at(stack[k].shape.t))) {
-                hit = stack[k];
-                best = hit.shape.t;
-                found = true;
-                break;
-            }
+        for (size_t k = first; k < stack.size() && !kept(stack[k]); ++k) {
+        }
         stack.resize(first);
     }
     return found;
