@@ -147,6 +147,26 @@ TEST(Superellipsoid, ExponentsNearZeroAndGrazingRays) {
     }
 }
 
+TEST(Superellipsoid, LargeIntegerPowersTraceAsTheRealOnesBesideThem) {
+    // 2/e = 40 is computed by squaring, 2/e a hair from 40 by pow: the same surface.
+    Geometry squared(scene_of({make(scene::Superellipsoid{0.05, 0.05})}));
+    Geometry real(scene_of({make(scene::Superellipsoid{0.05 * (1 + 1e-13), 0.05 * (1 + 1e-13)})}));
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0;
+    for (int i = 0; i < 300; ++i) {
+        glm::dvec3 o{u(rng) * 3, u(rng) * 3, -3}, target{u(rng), u(rng), u(rng)};
+        Ray rr = ray(o, target - o);
+        auto a = trace(squared, rr), b = trace(real, rr);
+        ASSERT_EQ(bool(a), bool(b)) << i;
+        if (!a) continue;
+        ++hits;
+        EXPECT_NEAR(a->t, b->t, 1e-9) << i;
+        EXPECT_NEAR(glm::dot(glm::normalize(a->normal), glm::normalize(b->normal)), 1, 1e-9) << i;
+    }
+    EXPECT_GT(hits, 100);
+}
+
 TEST(Superellipsoid, NZeroAndFarAway) {
     // n = 0: 2/n is infinite, the z profile a square (POV-Ray keeps the infinities).
     Geometry cyl(scene_of({make(scene::Superellipsoid{1, 0})}));
