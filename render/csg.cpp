@@ -120,9 +120,10 @@ void drop_repeats(std::vector<NodeHit>& hits, size_t first) {
     hits.erase(end, hits.end());
 }
 
-// Where along the ray a hit of member i of an intersection can be kept: inside every other
-// member's solid box (widened by a rounding margin; csg_accepts decides exactly). Members
-// beyond the first 16 are not looked at (the range is then only wider).
+// Where along the ray a hit of member i can be kept: within its own surface box and, in an
+// intersection, inside every other member's solid box (widened by a rounding margin;
+// csg_accepts decides exactly). Members beyond the first 16 are not looked at for the latter
+// (the range is then only wider).
 struct MemberRanges {
     static constexpr uint32_t kMax = 16;
     double enter[kMax], exit[kMax];
@@ -140,9 +141,13 @@ struct MemberRanges {
             exit[j] = x + 1e-6 * (1 + std::abs(x));
         }
     }
-    void narrow(uint32_t i, double& lo, double& hi) const {
+    // Narrows (lo, hi) for member i (node c); false when no hit of it can be kept there.
+    bool narrow(const NodeStore& store, const SlabRay& slab, uint32_t i, uint32_t c, double& lo,
+                double& hi) const {
         for (uint32_t j = 0; j < count; ++j)
             if (j != i) lo = std::max(lo, enter[j]), hi = std::min(hi, exit[j]);
+        const Aabb& box = store.nodes[c].surface;
+        return lo < hi && !box.empty() && (!box.finite() || slab.hits(box, lo, hi));
     }
 };
 
@@ -164,11 +169,8 @@ void collect_hits(const NodeStore& store, uint32_t index, const Ray& ray, double
         const MemberRanges ranges(store, n, slab, lo, hi);
         for (uint32_t i = 0; i < n.child_count; ++i) {
             const uint32_t c = store.links[n.children + i];
-            const Aabb& box = store.nodes[c].surface;
             double from = lo, to = hi;
-            ranges.narrow(i, from, to);
-            if (!(from < to) || box.empty() || (box.finite() && !slab.hits(box, from, to)))
-                continue;
+            if (!ranges.narrow(store, slab, i, c, from, to)) continue;
             const size_t first = out.size();
             collect_hits(store, c, ray, from, to, shadow, true, out);
             if (n.kind != NodeKind::Union)
@@ -216,11 +218,8 @@ bool nearest_of_members(const NodeStore& store, const Node& n, const Ray& ray, d
     double best = tmax;
     for (uint32_t i = 0; i < n.child_count && !(found && any); ++i) {
         const uint32_t c = store.links[n.children + i];
-        const Aabb& box = store.nodes[c].surface;
         double from = tmin, to = best;
-        ranges.narrow(i, from, to);
-        if (!(from < to) || box.empty() || (box.finite() && !slab.hits(box, from, to)))
-            continue;
+        if (!ranges.narrow(store, slab, i, c, from, to)) continue;
         const auto kept = [&](const NodeHit& h) {
             if (!csg_accepts(store, n, i, ray.at(h.shape.t))) return false;
             hit = h;
