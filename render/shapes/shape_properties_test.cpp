@@ -366,7 +366,9 @@ TYPED_TEST(ShapeProperties, AskedFromAHitTheNextHitLiesBeyondIt) {
     // CSG lists a member's hits by asking again from each one: a shape that works in its own
     // units must not round the distance asked from back onto the same hit.
     this->for_each_hit([](const Instance& in, const Ray& r, const WorldHit& h) {
-        if (auto next = in.hit(r, h.t)) EXPECT_GT(next->t, h.t);
+        if (auto next = in.hit(r, h.t)) {
+            EXPECT_GT(next->t, h.t);
+        }
     });
 }
 
