@@ -13,6 +13,14 @@ constexpr double kEpsilon = 1e-10;
 
 double to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
+// pow for the exponents scenes mostly give (tightness 1, fade_power 2) without the call, with
+// the same result: lights are evaluated at every radiosity gather's hit.
+double light_pow(double x, double y) {
+    if (y == 1) return x;
+    if (y == 2) return x * x;
+    return std::pow(x, y);
+}
+
 // Hermite ramp between lo and hi (POV's cone edge).
 double smooth_step(double lo, double hi, double x) {
     if (x < lo) return 0;
@@ -24,7 +32,7 @@ double smooth_step(double lo, double hi, double x) {
 // Spotlight cone; cos_theta is the angle between the axis and light -> point.
 double spot_attenuation(const LightSource& l, double cos_theta) {
     if (cos_theta <= 0) return 0;
-    double att = l.tightness != 0 ? std::pow(cos_theta, l.tightness) : 1.0;
+    double att = l.tightness != 0 ? light_pow(cos_theta, l.tightness) : 1.0;
     if (cos_theta < l.cos_radius) att *= smooth_step(l.cos_falloff, l.cos_radius, cos_theta);
     return att;
 }
@@ -37,7 +45,7 @@ double cylinder_attenuation(const LightSource& l, const glm::dvec3& point) {
     const double k = glm::length(d - along * l.axis);
     if (k >= l.falloff) return 0;
     double att = 1;
-    if (l.tightness != 0) att = std::pow(std::max(0.0, 1 - k / l.falloff), l.tightness);
+    if (l.tightness != 0) att = light_pow(std::max(0.0, 1 - k / l.falloff), l.tightness);
     if (k > l.radius) att *= smooth_step(0, 1, (l.falloff - k) / (l.falloff - l.radius));
     return att;
 }
@@ -102,7 +110,7 @@ double beam_factor(const LightSource& l, const glm::dvec3& point) {
 
 double light_fade(const LightSource& l, double distance) {
     if (!(l.fade_power > 0) || !(std::fabs(l.fade_distance) > kEpsilon)) return 1;
-    return 2 / (1 + std::pow(distance / l.fade_distance, l.fade_power));
+    return 2 / (1 + light_pow(distance / l.fade_distance, l.fade_power));
 }
 
 bool illuminate(const LightSource& l, const glm::dvec3& point, LightSample& out) {
