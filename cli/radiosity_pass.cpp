@@ -109,7 +109,8 @@ const render::IndirectLight* RadiosityPass::prepare(const render::RenderFrame& f
     points_ = std::make_unique<rad::PointGather>(frame, *mesh_, &solution_->B,
                                                  rad::point_gather_settings(
                                                      scene, ds, bounces_,
-                                                     options.display == rad::DisplayMode::Gather));
+                                                     options.display == rad::DisplayMode::Gather),
+                                                 &solution_->indirect);
     if (options.display == rad::DisplayMode::Preview) {
         // The view-dependent part: a many-ray final gather at the vertices the camera sees
         // (the rest keep the solution's G, for reflections).

@@ -423,6 +423,7 @@ TEST(RadiosityPass, SolutionFileRoundTripAndMismatch) {
     for (size_t i = 0; i < saved.B.size(); ++i) {
         EXPECT_EQ(loaded.B[i], saved.B[i]);
         EXPECT_EQ(loaded.G[i], saved.G[i]);
+        EXPECT_EQ(loaded.indirect[i], saved.indirect[i]);
     }
     EXPECT_THROW(render::radiosity::load_solution(path, key_of(s, o) + 1, saved.B.size()),
                  LumenError);

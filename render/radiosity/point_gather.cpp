@@ -11,9 +11,13 @@
 namespace lumen::render::radiosity {
 
 PointGather::PointGather(const RenderFrame& frame, const SceneMesh& mesh,
-                         const std::vector<glm::dvec3>* B, const PointGatherSettings& settings)
-    : frame_(frame), mesh_(mesh), B_(B), s_(settings) {
-    if (B_) caches_ = make_caches();
+                         const std::vector<glm::dvec3>* B, const PointGatherSettings& settings,
+                         const std::vector<glm::dvec3>* indirect)
+    : frame_(frame), mesh_(mesh), B_(B), s_(settings), indirect_(B ? indirect : nullptr) {
+    if (!B_) return;
+    caches_ = make_caches();
+    if (indirect_)
+        for (const glm::dvec3& g : *indirect_) any_indirect_ = any_indirect_ || g != glm::dvec3(0);
 }
 
 PointGather::Caches PointGather::make_caches() const {
@@ -76,7 +80,8 @@ glm::dvec3 PointGather::incident(const glm::dvec3& p, const glm::dvec3& n, int l
     return incident_in(t_block_caches ? *t_block_caches : caches_, p, n, level);
 }
 
-glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level) const {
+glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level, long element,
+                                const glm::dvec3& bary) const {
     const SurfaceMaterial m = surface_material(hit.texture, hit.point, s_.ambient_emission);
     if (m.rho == glm::dvec3(0)) return m.emission;
     glm::dvec3 n = hit.normal;
@@ -84,9 +89,31 @@ glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level
     // Lifted as the tracer lifts its shadow rays off a surface.
     const glm::dvec3 p = hit.point + n * (1e-6 * std::max(1.0, mesh_.patch_size));
     TraceCounters counters;
-    glm::dvec3 in = direct_light_at(frame_.lights(), frame_.geometry(), p, n, m.brilliance,
-                                    counters);
-    if (B_ && level < s_.bounces) in += incident(hit.point, n, level + 1);
+    glm::dvec3 in;
+    // Up to kAllLights lights, a shadow ray to each, as POV-Ray's radiosity rays trace them;
+    // more (radiosity/cornell.pov's 16, an area light built of point lights), one picked by
+    // a number the hit itself gives (deterministic): the gather's many hits average the pick.
+    constexpr size_t kAllLights = 4;
+    if (frame_.lights().size() > kAllLights) {
+        uint64_t h = 0xcbf29ce484222325ULL;
+        for (double x : {hit.point.x, hit.point.y, hit.point.z, dir.x, dir.y, dir.z})
+            h = (h ^ std::hash<double>{}(x)) * 1099511628211ULL;
+        h ^= h >> 33;
+        h *= 0xff51afd7ed558ccdULL;
+        h ^= h >> 33;
+        const double u = double(h >> 11) * 0x1.0p-53;
+        in = direct_light_one_of(frame_.lights(), frame_.geometry(), p, n, m.brilliance, u,
+                                 counters);
+    } else {
+        in = direct_light_at(frame_.lights(), frame_.geometry(), p, n, m.brilliance, counters);
+    }
+    if (element >= 0 && indirect_) {  // the solution's indirect light, over the element
+        const MeshElement& el = mesh_.elements[size_t(element)];
+        const uint32_t side = seen_side(el, hit.normal, -dir);
+        for (int k = 0; k < 3; ++k) in += bary[k] * (*indirect_)[2 * el.v[k] + side];
+    } else if (B_ && level < s_.bounces) {
+        in += incident(hit.point, n, level + 1);
+    }
     return m.emission + m.rho * in;
 }
 

@@ -28,14 +28,24 @@ struct PointGatherSettings {
     bool gradients = true;           // records extrapolate (irradiance_gradients.hpp)
 };
 
-class PointGather final : public UnmeshedSurfaces {
+class PointGather final : public SurfaceRadiance {
 public:
     // `B` null: no solution yet (the solve's own gathers), so surfaces without elements
-    // leave only E + ρH. Everything passed must outlive the object.
+    // leave only E + ρH. With the solution's `indirect` (Solution::indirect), every hit is
+    // evaluated where it lies, meshed or not: the direct light and the material at the hit
+    // point itself (the element's B blurs them over its corners: a shadow edge, a pattern),
+    // plus the solution's indirect light interpolated over the element. Everything passed
+    // must outlive the object.
     PointGather(const RenderFrame& frame, const SceneMesh& mesh, const std::vector<glm::dvec3>* B,
-                const PointGatherSettings& settings);
+                const PointGatherSettings& settings,
+                const std::vector<glm::dvec3>* indirect = nullptr);
 
-    glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const override;
+    glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level, long element,
+                       const glm::dvec3& bary) const override;
+    bool evaluates_every_hit() const override { return indirect_ != nullptr; }
+    bool uses_element(int level) const override {
+        return any_indirect_ || (B_ && level < s_.bounces);
+    }
     void with_worker_caches(size_t worker, const std::function<void()>& work) const override;
 
     // Incident indirect light at surface point p on the side of unit normal n, for a gather
@@ -55,6 +65,8 @@ private:
     const SceneMesh& mesh_;
     const std::vector<glm::dvec3>* B_;
     PointGatherSettings s_;
+    const std::vector<glm::dvec3>* indirect_;
+    bool any_indirect_ = false;  // not all zeros (one bounce)
     using Caches = std::vector<std::unique_ptr<IrradianceCache>>;  // per level, 1 first
     Caches make_caches() const;
     glm::dvec3 incident_in(const Caches& caches, const glm::dvec3& p, const glm::dvec3& n,

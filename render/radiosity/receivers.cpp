@@ -218,7 +218,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const Intersector& geometry, const std::vector<glm::dvec3>& B,
                      const std::vector<char>& wanted, int rays, int threads,
                      const std::vector<glm::dvec3>& fallback,
-                     const SubdivisionOptions& options, const UnmeshedSurfaces* unmeshed) {
+                     const SubdivisionOptions& options, const SurfaceRadiance* unmeshed) {
     ReceiverMesh r(mesh);
     if (!fallback.empty()) {
         r.G = fallback;

@@ -78,7 +78,7 @@ ReceiverMesh receive(const scene::Scene& scene, const SceneMesh& mesh,
                      const std::vector<char>& wanted, int rays, int threads,
                      const std::vector<glm::dvec3>& fallback,
                      const SubdivisionOptions& options,
-                     const UnmeshedSurfaces* unmeshed = nullptr);
+                     const SurfaceRadiance* unmeshed = nullptr);
 
 // Buried vertex sides (gathers that started inside solid matter: a floor vertex under a box
 // standing on it, a ring sunk into a column) take the mean of their unburied neighbours on

@@ -128,7 +128,7 @@ private:
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry,
                                       const RadiosityOptions& options, int threads,
-                                      const UnmeshedSurfaces* unmeshed) {
+                                      const SurfaceRadiance* unmeshed) {
     const size_t n = mesh.unknowns();
     std::vector<Row> rows(n);
     VertexFormFactors F;
@@ -155,8 +155,9 @@ VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh
                 auto on_miss = [&](const glm::dvec3& dir, double w) {
                     F.env[u] += w * background_radiance(scene, dir);
                 };
-                auto on_unmeshed = [&](const Hit& hit, const glm::dvec3& dir, double w) {
-                    if (unmeshed) F.env[u] += w * unmeshed->leaving(hit, dir, 1);
+                auto on_unmeshed = [&](const Hit& hit, const glm::dvec3& dir, double w, long,
+                                       const glm::dvec3&) {
+                    if (unmeshed) F.env[u] += w * unmeshed->leaving(hit, dir, 1, -1, {});
                 };
                 counted.clear();
                 if (method == FormFactorMethod::Hemicube) {

@@ -241,7 +241,7 @@ std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geomet
 GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
-                          uint64_t seed, const UnmeshedSurfaces* unmeshed, int level,
+                          uint64_t seed, const SurfaceRadiance* unmeshed, int level,
                           bool gradients) {
     GatherResult r;
     double inv_dist = 0, weight = 0;
@@ -266,14 +266,11 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
             r.G += in;
             record(in, INFINITY);
         },
-        [&](const Hit& hit, const glm::dvec3& dir, double w) {
-            if (unmeshed) {
-                const glm::dvec3 in = w * unmeshed->leaving(hit, dir, level);
-                r.G += in;
-                record(in, hit.t);
-            } else {
-                record(glm::dvec3(0), hit.t);
-            }
+        [&](const Hit& hit, const glm::dvec3& dir, double w, long e, const glm::dvec3& bary) {
+            const glm::dvec3 in = unmeshed ? w * unmeshed->leaving(hit, dir, level, e, bary)
+                                           : glm::dvec3(0);
+            r.G += in;
+            record(in, hit.t);
             inv_dist += w / std::max(hit.t, 1e-9);
             weight += w;
         },
@@ -292,7 +289,9 @@ GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
             // the surface outside. Left out; the rest stands for the hemisphere.
             r.inside += w;
             return true;
-        });
+        },
+        HitEvaluation{unmeshed && unmeshed->evaluates_every_hit(),
+                      !unmeshed || unmeshed->uses_element(level)});
     if (r.inside > 0 && r.inside < 1) r.G /= 1 - r.inside;
     r.harmonic_distance = inv_dist > 0 ? weight / inv_dist : INFINITY;
     if (gradients) {
@@ -405,7 +404,7 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
         if (sol.bounces > 0) info.iterations = 1;  // reported as bounces: the last is G
         // Sparse sweeps: one bounce each; bounce-limited (POV) or until the change is small.
         const int cap = sol.bounces > 0 ? sol.bounces - 1 : 10000;
-        std::vector<glm::dvec3> G;
+        std::vector<glm::dvec3> G = limited ? std::vector<glm::dvec3>(n) : F.env;
         for (int k = 0; k < cap; ++k) {
             G = gather_all(B);
             double change = 0, size = 1e-300;
@@ -427,6 +426,7 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
             if (k + 1 == cap && sol.bounces == 0)
                 info.warnings.push_back("warning: radiosity: Jacobi stopped at its iteration cap");
         }
+        sol.indirect = std::move(G);
     } else if (method == Method::GaussSeidel || method == Method::Progressive) {
         // On the sparse rows: no dense matrix, no cap on the unknowns.
         std::vector<glm::dvec3> rho(n), c(n);
@@ -466,7 +466,11 @@ Solution solve_scene(const RenderFrame& frame, const SceneMesh& mesh,
     }
     for (glm::dvec3& b : B)
         if (!std::isfinite(b.x + b.y + b.z)) b = glm::dvec3(0);  // never a NaN in a pixel
+    for (glm::dvec3& g : sol.indirect)
+        if (!std::isfinite(g.x + g.y + g.z)) g = glm::dvec3(0);
     if (form_factors) sol.G = gather_all(B);
+    // The converged solvers' B is E + ρ(H + F B): its indirect light is the next gather's.
+    if (sol.indirect.size() != n) sol.indirect = form_factors ? sol.G : std::vector<glm::dvec3>(n);
     sol.B = std::move(B);
     info.solve_seconds = seconds_since(t0);
     return sol;

@@ -23,14 +23,27 @@
 
 namespace lumen::render::radiosity {
 
-// What a radiosity ray sees where it lands on a surface without elements (CSG other than
-// unions, shapes the mesher cannot cut, pure emitters): point_gather.hpp evaluates it there.
-class UnmeshedSurfaces {
+// What a radiosity ray sees where it lands, evaluated at the hit (point_gather.hpp): on a
+// surface without elements (CSG other than unions, shapes the mesher cannot cut, pure
+// emitters) always, and on every surface where evaluates_every_hit() (the gathers that follow
+// a solve).
+class SurfaceRadiance {
 public:
-    virtual ~UnmeshedSurfaces() = default;
+    virtual ~SurfaceRadiance() = default;
     // The light leaving `hit` back along the ray (direction `dir`) of a gather at `level`
-    // (1: the gathers the camera's hits and the final gather make).
-    virtual glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level) const = 0;
+    // (1: the gathers the camera's hits and the final gather make). `element`: the scene
+    // mesh element the hit lies on, at barycentric `bary`; -1 where it lies on none (or
+    // where uses_element(level) said it need not be looked for).
+    virtual glm::dvec3 leaving(const Hit& hit, const glm::dvec3& dir, int level, long element,
+                               const glm::dvec3& bary) const = 0;
+    // Whether a gather asks leaving() on meshed surfaces too, in place of interpolating the
+    // solution's B over the element it lands on.
+    virtual bool evaluates_every_hit() const { return false; }
+    // Whether leaving() at `level` needs the element under the hit (finding it costs a probe).
+    virtual bool uses_element(int level) const {
+        (void)level;
+        return true;
+    }
     // Runs `work` with the caches of `worker` (kept from call to call) for the gathers
     // `leaving` makes on this thread: with each worker given a fixed share of the work, what
     // it computes does not depend on which thread reached a surface first.
@@ -57,6 +70,10 @@ struct Solution {
     std::vector<glm::dvec3> B;  // per unknown: leaving radiosity (bounce k−1)
     std::vector<glm::dvec3> G;  // per unknown: incident indirect light (bounce k); empty
                                 // without form factors (needs_form_factors)
+    // Per unknown: the incident indirect light inside B, B = E + ρ(H + indirect) (bounce
+    // k−1; zeros for one bounce). A gather that lands on an element adds it to the direct
+    // light it evaluates at the hit.
+    std::vector<glm::dvec3> indirect;
     int bounces = 0;            // k; 0 = converged
     uint64_t scene_key = 0;     // what the solution was computed for (save/load, animation)
 };
@@ -83,7 +100,7 @@ std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& 
 VertexFormFactors vertex_form_factors(const scene::Scene& scene, const SceneMesh& mesh,
                                       const Intersector& geometry,
                                       const RadiosityOptions& options, int threads,
-                                      const UnmeshedSurfaces* unmeshed = nullptr);
+                                      const SurfaceRadiance* unmeshed = nullptr);
 
 // Which vertex sides the camera sees (one primary ray per pixel), rows on `threads` threads.
 std::vector<char> visible_sides(const SceneMesh& mesh, const Intersector& geometry,
@@ -119,11 +136,12 @@ struct GatherResult {
 // Incident light at a point: `rays` stratified cosine rays from `origin` about the unit
 // `normal` (deterministic for `seed`); a hit returns B interpolated over the element it lands
 // on, a miss the background, a surface without elements what `unmeshed` says it leaves
-// (nothing when null) for a gather at `level`.
+// (nothing when null) for a gather at `level`, and so does every surface where
+// `unmeshed->evaluates_every_hit()`.
 GatherResult gather_point(const scene::Scene& scene, const SceneMesh& mesh,
                           const Intersector& geometry, const std::vector<glm::dvec3>& B,
                           const glm::dvec3& origin, const glm::dvec3& normal, int rays,
-                          uint64_t seed, const UnmeshedSurfaces* unmeshed = nullptr,
+                          uint64_t seed, const SurfaceRadiance* unmeshed = nullptr,
                           int level = 1, bool gradients = false);
 
 // The whole solution of the frame: direct light, form factors and the solve the options ask

@@ -13,7 +13,7 @@ namespace lumen::render::radiosity {
 namespace {
 
 constexpr const char* kMagic = "lumen-radiosity-solution";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  // 2: the indirect light inside B
 
 [[noreturn]] void bad_file(const std::string& path, const std::string& why) {
     throw LumenError({}, "radiosity solution file '" + path + "': " + why);
@@ -24,12 +24,13 @@ void write_solution(const Solution& s, std::ostream& out) {
         << "scene " << s.scene_key << '\n'
         << "unknowns " << s.B.size() << '\n'
         << "bounces " << s.bounces << '\n';
-    char buf[160];
+    char buf[256];
     for (size_t u = 0; u < s.B.size(); ++u) {
         // A solve without form factors has no G: zeros (needs_form_factors says so on load).
         const glm::dvec3 g = u < s.G.size() ? s.G[u] : glm::dvec3(0);
-        std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g\n", s.B[u].x,
-                      s.B[u].y, s.B[u].z, g.x, g.y, g.z);
+        const glm::dvec3 i = u < s.indirect.size() ? s.indirect[u] : glm::dvec3(0);
+        std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n",
+                      s.B[u].x, s.B[u].y, s.B[u].z, g.x, g.y, g.z, i.x, i.y, i.z);
         out << buf;
     }
     out << "end\n";
@@ -50,7 +51,8 @@ Solution load_solution(const std::string& path, uint64_t scene_key, size_t unkno
     Solution s;
     size_t n = 0;
     if (!(in >> magic >> version) || magic != kMagic) bad_file(path, "not a lumen radiosity solution");
-    if (version != kVersion) bad_file(path, "version " + std::to_string(version) + " (lumen reads 1)");
+    if (version != kVersion) bad_file(path, "version " + std::to_string(version) + " (lumen reads " +
+                                              std::to_string(kVersion) + ")");
     if (!(in >> word >> s.scene_key) || word != "scene" || !(in >> word >> n) ||
         word != "unknowns" || !(in >> word >> s.bounces) || word != "bounces")
         bad_file(path, "malformed header");
@@ -61,11 +63,15 @@ Solution load_solution(const std::string& path, uint64_t scene_key, size_t unkno
                            std::to_string(unknowns) + " (another Radiosity_Patch_Size?)");
     s.B.resize(n);
     s.G.resize(n);
+    s.indirect.resize(n);
     for (size_t u = 0; u < n; ++u) {
         auto& b = s.B[u];
         auto& g = s.G[u];
-        if (!(in >> b.x >> b.y >> b.z >> g.x >> g.y >> g.z)) bad_file(path, "truncated");
-        if (!std::isfinite(b.x + b.y + b.z + g.x + g.y + g.z)) bad_file(path, "non-finite value");
+        auto& i = s.indirect[u];
+        if (!(in >> b.x >> b.y >> b.z >> g.x >> g.y >> g.z >> i.x >> i.y >> i.z))
+            bad_file(path, "truncated");
+        if (!std::isfinite(b.x + b.y + b.z + g.x + g.y + g.z + i.x + i.y + i.z))
+            bad_file(path, "non-finite value");
     }
     if (!(in >> word) || word != "end") bad_file(path, "truncated");
     return s;

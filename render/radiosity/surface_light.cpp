@@ -53,6 +53,28 @@ bool never_diffuse(const scene::LayeredTexture* texture) {
     return true;
 }
 
+namespace {
+
+// Light l's unshadowed term at p: false where it does not reach p (outside a spotlight, in a
+// light group) or arrives from behind n without `two_sided`; `behind` says it did.
+bool unshadowed(const LightSource& l, const glm::dvec3& p, const glm::dvec3& n,
+                double brilliance, bool two_sided, LightSample& ls, glm::dvec3& term,
+                bool& behind) {
+    // The patches do not know their light_groups: a group's lights are left out of them.
+    if (l.group != 0 || !illuminate(l, p, ls)) return false;
+    double c = glm::dot(n, ls.dir);
+    behind = c <= 0;
+    if (behind) {
+        if (!two_sided) return false;
+        c = -c;
+        if (c <= 0) return false;
+    }
+    term = ls.colour * (brilliance == 1 ? c : std::pow(c, brilliance));
+    return true;
+}
+
+}  // namespace
+
 glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Intersector& geometry,
                            const glm::dvec3& p, const glm::dvec3& n, double brilliance,
                            TraceCounters& counters, glm::dvec3* back) {
@@ -60,21 +82,50 @@ glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Interse
     glm::dvec3 H(0);
     for (const LightSource& l : lights) {
         LightSample ls;
-        // The patches do not know their light_groups: a group's lights are left out of them.
-        if (l.group != 0 || !illuminate(l, p, ls)) continue;
-        double c = glm::dot(n, ls.dir);
-        glm::dvec3* side = &H;
-        if (c <= 0) {
-            if (!back) continue;
-            c = -c;
-            side = back;
-            if (c <= 0) continue;
-        }
-        glm::dvec3 lc = ls.colour * (brilliance == 1 ? c : std::pow(c, brilliance));
+        glm::dvec3 lc;
+        bool behind = false;
+        if (!unshadowed(l, p, n, brilliance, back != nullptr, ls, lc, behind)) continue;
         if (!l.shadowless) lc *= shadow_filter(geometry, p, ls.dir, ls.distance, outside, counters);
-        *side += lc;
+        *(behind ? back : &H) += lc;
     }
     return H;
+}
+
+glm::dvec3 direct_light_one_of(const std::vector<LightSource>& lights,
+                               const Intersector& geometry, const glm::dvec3& p,
+                               const glm::dvec3& n, double brilliance, double u,
+                               TraceCounters& counters) {
+    struct Candidate {
+        LightSample ls;
+        glm::dvec3 term;
+        double weight;
+    };
+    thread_local std::vector<Candidate> shadowed;
+    shadowed.clear();
+    glm::dvec3 H(0);
+    double total = 0;
+    for (const LightSource& l : lights) {
+        Candidate c;
+        bool behind = false;
+        if (!unshadowed(l, p, n, brilliance, false, c.ls, c.term, behind)) continue;
+        if (l.shadowless) {
+            H += c.term;
+            continue;
+        }
+        c.weight = c.term.x + c.term.y + c.term.z;
+        if (!(c.weight > 0)) continue;
+        total += c.weight;
+        shadowed.push_back(c);
+    }
+    if (shadowed.empty()) return H;
+    // The light chosen with probability weight / total stands for all of them.
+    double at = u * total;
+    size_t k = 0;
+    while (k + 1 < shadowed.size() && at >= shadowed[k].weight) at -= shadowed[k++].weight;
+    const Candidate& c = shadowed[k];
+    const InteriorList outside{};
+    return H + c.term * (total / c.weight) *
+                   shadow_filter(geometry, p, c.ls.dir, c.ls.distance, outside, counters);
 }
 
 }  // namespace lumen::render::radiosity

@@ -41,4 +41,14 @@ glm::dvec3 direct_light_at(const std::vector<LightSource>& lights, const Interse
                            const glm::dvec3& p, const glm::dvec3& n, double brilliance,
                            TraceCounters& counters, glm::dvec3* back = nullptr);
 
+// The same on the side of n alone, with one shadow ray where direct_light_at traces one per
+// light: the lights' unshadowed terms are summed, one light is picked with probability its
+// share of the sum (by `u` in [0, 1)) and its visibility stands for all (an unbiased
+// estimate; shadowless lights are added whole). A gather that lands on many points averages
+// the choice away at a fraction of the rays (radiosity/cornell.pov's 16 lights).
+glm::dvec3 direct_light_one_of(const std::vector<LightSource>& lights,
+                               const Intersector& geometry, const glm::dvec3& p,
+                               const glm::dvec3& n, double brilliance, double u,
+                               TraceCounters& counters);
+
 }  // namespace lumen::render::radiosity

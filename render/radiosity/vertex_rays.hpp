@@ -29,7 +29,14 @@ inline bool radiosity_hit(const Intersector& geometry, const Ray& ray, Hit& hit)
 
 // The default for rays landing where no element is: they count for nothing.
 struct IgnoreUnmeshed {
-    void operator()(const Hit&, const glm::dvec3&, double) const {}
+    void operator()(const Hit&, const glm::dvec3&, double, long, const glm::dvec3&) const {}
+};
+
+// Which hits a gather evaluates for itself (on_unmeshed) rather than sharing among the
+// vertices of the element they land on.
+struct HitEvaluation {
+    bool every_hit = false;    // all of them, not only those where no element is
+    bool find_element = true;  // with every_hit: look for the element under the hit
 };
 
 // The default for rays that started inside solid matter (SceneMesh::solids): counted as any
@@ -40,12 +47,14 @@ struct KeepInside {
 
 // One ray of weight w: on_hit(element, unknown, share, t) for each vertex of the element it
 // lands on (barycentric share of w), on_miss(direction, w) when it escapes,
-// on_unmeshed(hit, direction, w) when it lands on a surface without elements.
+// on_unmeshed(hit, direction, w, element, barycentric) when it lands on a surface without
+// elements (element -1), or on any surface as `evaluation` says.
 template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed,
           class OnInside = KeepInside>
 void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& dir, double w, OnHit&& on_hit, OnMiss&& on_miss,
-               OnUnmeshed&& on_unmeshed = {}, OnInside&& on_inside = {}) {
+               OnUnmeshed&& on_unmeshed = {}, OnInside&& on_inside = {},
+               const HitEvaluation& evaluation = {}) {
     Hit hit;
     if (!radiosity_hit(geometry, Ray{origin, dir}, hit)) {
         on_miss(dir, w);
@@ -53,10 +62,12 @@ void trace_ray(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
     }
     if (glm::dot(hit.normal, dir) > 0 && mesh.solids.count(hit.object) && on_inside(dir, w))
         return;
-    glm::dvec3 bary;
-    const long e = mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary);
-    if (e < 0) {
-        on_unmeshed(hit, dir, w);
+    glm::dvec3 bary(0);
+    const long e = !evaluation.every_hit || evaluation.find_element
+                       ? mesh.find(origin, dir, hit.t, 1e-4 + 1e-7 * hit.t, hit.object, bary)
+                       : -1;
+    if (e < 0 || evaluation.every_hit) {
+        on_unmeshed(hit, dir, w, e, bary);
         return;
     }
     const MeshElement& el = mesh.elements[size_t(e)];
@@ -77,7 +88,7 @@ template <class OnHit, class OnMiss, class OnUnmeshed = IgnoreUnmeshed,
 void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dvec3& origin,
                const glm::dvec3& normal, uint64_t seed, int rays, OnHit&& on_hit,
                OnMiss&& on_miss, OnUnmeshed&& on_unmeshed = {}, OnStratum&& on_stratum = {},
-               OnInside&& on_inside = {}) {
+               OnInside&& on_inside = {}, const HitEvaluation& evaluation = {}) {
     const int cells = std::max(1, int(std::lround(std::sqrt(double(rays)))));
     const double w = 1.0 / (cells * cells);
     SampleRng rng(seed);
@@ -86,7 +97,8 @@ void cast_rays(const SceneMesh& mesh, const Intersector& geometry, const glm::dv
             const glm::dvec3 dir =
                 cosine_direction(normal, (i + rng.uniform()) / cells, (j + rng.uniform()) / cells);
             on_stratum(i, j, cells);
-            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed, on_inside);
+            trace_ray(mesh, geometry, origin, dir, w, on_hit, on_miss, on_unmeshed, on_inside,
+                      evaluation);
         }
 }
 
