@@ -168,5 +168,30 @@ TEST(RadiosityGatherHits, OneLightPickedPerHitAveragesToEveryLight) {
     EXPECT_GT(every.x, 0.3) << "the scene lights the point";
 }
 
+// A split element's midpoint finds the true surface under it with a probe as long as half
+// its edge. On a thin shell (two sheets of one mesh, 0.1 apart) the probe from above meets
+// the other sheet first; the gather must start on the sheet the point lies on
+// (camera/mesh_camera/baking_demo.pov's vases: blocks of dark elements where midpoints
+// gathered from the vase's far wall).
+TEST(RadiosityGatherHits, AGatherStartsOnTheSurfaceNearestItsPoint) {
+    SourceManager sources;
+    const scene::Scene s = parse(sources,
+                                 "#version 3.7;\n"
+                                 "camera { location <0, 3, -4> look_at <0, 0, 0> }\n"
+                                 "mesh { triangle { <-1, 0, -1>, <1, 0, -1>, <1, 0, 1> }\n"
+                                 "       triangle { <-1, 0.1, -1>, <1, 0.1, -1>, <1, 0.1, 1> }\n"
+                                 "       pigment { rgb 1 } }\n");
+    const render::RenderFrame frame(s);
+    render::Hit hit;
+    ASSERT_TRUE(frame.geometry().intersect(render::Ray{{0.5, -1, -0.5}, {0, 1, 0}}, 1e-4, 1e9, hit));
+    ASSERT_NEAR(hit.point.y, 0, 1e-9);
+    for (double y : {0.0, -0.02, 0.02}) {  // on the lower sheet, and a chord's error off it
+        glm::dvec3 p(0.5, y, -0.5), n(0, 1, 0);
+        ASSERT_TRUE(rad::onto_surface(frame.geometry(), hit.object, p, n, 0.5));
+        EXPECT_NEAR(p.y, 0, 1e-9) << "from y = " << y;
+        EXPECT_NEAR(std::fabs(n.y), 1, 1e-9);
+    }
+}
+
 }  // namespace
 }  // namespace lumen::cli

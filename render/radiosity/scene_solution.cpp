@@ -137,22 +137,29 @@ bool same_declaration(const scene::Object* a, const scene::Object* b) {
 bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
                   glm::dvec3& n, double reach) {
     const Ray probe{p + n * reach, -n};
-    double t_min = 0;
+    // The object's hit nearest p, not the first: with a reach wider than the object (a
+    // mesh's narrow neck, a thin shell) the probe starts beyond its far side.
+    double t_min = 0, best = INFINITY;
+    Hit nearest;
     for (int i = 0; i < 8; ++i) {
         Hit hit;
-        if (!geometry.intersect(probe, t_min, 2 * reach, hit, Query::All)) return false;
+        if (!geometry.intersect(probe, t_min, 2 * reach, hit, Query::All)) break;
+        if (hit.t - reach >= best) break;  // the rest lie farther from p
         const double c = glm::dot(hit.normal, n);
         // A copy must face the same way: a neighbour made by the same loop or macro that
         // touches the object face to face faces the other way.
         const bool own = hit.object == object || (same_declaration(hit.object, object) && c > 0.5);
-        if (own && std::fabs(c) > 0.5 && std::isfinite(c)) {
-            p = hit.point;
-            n = c > 0 ? hit.normal : -hit.normal;
-            return true;
+        if (own && std::fabs(c) > 0.5 && std::isfinite(c) && std::fabs(hit.t - reach) < best) {
+            best = std::fabs(hit.t - reach);
+            nearest = hit;
         }
         t_min = hit.t;
     }
-    return false;
+    if (best == INFINITY) return false;
+    const double c = glm::dot(nearest.normal, n);
+    p = nearest.point;
+    n = c > 0 ? nearest.normal : -nearest.normal;
+    return true;
 }
 
 std::vector<glm::dvec3> direct_light(const RenderFrame& frame, const SceneMesh& mesh, int threads) {

@@ -113,9 +113,10 @@ inline glm::dvec3 gather_origin(const SceneMesh& mesh, const MeshVertex& v) {
 }
 // The true surface under point p of a flat element with front normal n: a curved shape's
 // elements are chords, inside the surface away from their corners, and their normal is off
-// the surface's. A probe along -n from `reach` above p takes the first hit whose normal is
-// within 60 degrees of ±n, on `object`, and at most `reach` below p; p and n (kept on n's side) become that
-// hit on `object`'s. False, with p and n unchanged, when there is none.
+// the surface's. A probe along -n from `reach` above p to `reach` below it takes, of the hits
+// on `object` whose normal is within 60 degrees of ±n, the one nearest p; p and n (kept on
+// n's side) become that hit and `object`'s normal there. False, with p and n unchanged, when
+// there is none.
 bool onto_surface(const Intersector& geometry, const scene::Object* object, glm::dvec3& p,
                   glm::dvec3& n, double reach);
 
