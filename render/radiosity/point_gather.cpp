@@ -1,6 +1,7 @@
 #include "render/radiosity/point_gather.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <functional>
 
@@ -31,6 +32,13 @@ PointGather::Caches PointGather::make_caches() const {
 }
 
 namespace {
+// splitmix64's finaliser.
+uint64_t mix64(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
 // The caches of the render block whose gather runs on this thread, for its deeper levels.
 thread_local const std::vector<std::unique_ptr<IrradianceCache>>* t_block_caches = nullptr;
 }  // namespace
@@ -108,12 +116,9 @@ glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level
     // a number the hit itself gives (deterministic): the gather's many hits average the pick.
     constexpr size_t kAllLights = 4;
     if (frame_.lights().size() > kAllLights) {
-        uint64_t h = 0xcbf29ce484222325ULL;
-        for (double x : {hit.point.x, hit.point.y, hit.point.z, dir.x, dir.y, dir.z})
-            h = (h ^ std::hash<double>{}(x)) * 1099511628211ULL;
-        h ^= h >> 33;
-        h *= 0xff51afd7ed558ccdULL;
-        h ^= h >> 33;
+        uint64_t h = 0x9e3779b97f4a7c15ULL;
+        for (double x : {hit.point.x, hit.point.y, hit.point.z, dir.x, dir.y})
+            h = mix64(h ^ std::bit_cast<uint64_t>(x));
         const double u = double(h >> 11) * 0x1.0p-53;
         in = direct_light_one_of(frame_.lights(), frame_.geometry(), p, n, m.brilliance, u,
                                  counters);
