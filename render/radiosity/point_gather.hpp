@@ -32,10 +32,10 @@ class PointGather final : public SurfaceRadiance {
 public:
     // `B` null: no solution yet (the solve's own gathers), so surfaces without elements
     // leave only E + ρH. With the solution's `indirect` (Solution::indirect), every hit is
-    // evaluated where it lies, meshed or not: the direct light and the material at the hit
-    // point itself (the element's B blurs them over its corners: a shadow edge, a pattern),
-    // plus the solution's indirect light interpolated over the element. Everything passed
-    // must outlive the object.
+    // evaluated where it lies, meshed or not: the direct light at the hit point itself (the
+    // element's B blurs a shadow edge over its corners), the element's material (the
+    // texture's where there is no element), plus the solution's indirect light interpolated
+    // over the element. Everything passed must outlive the object.
     PointGather(const RenderFrame& frame, const SceneMesh& mesh, const std::vector<glm::dvec3>* B,
                 const PointGatherSettings& settings,
                 const std::vector<glm::dvec3>* indirect = nullptr);
