@@ -13,7 +13,7 @@ namespace lumen::render::radiosity {
 namespace {
 
 constexpr const char* kMagic = "lumen-radiosity-solution";
-constexpr int kVersion = 2;  // 2: the indirect light inside B
+constexpr int kVersion = kSolutionFileVersion;
 
 [[noreturn]] void bad_file(const std::string& path, const std::string& why) {
     throw LumenError({}, "radiosity solution file '" + path + "': " + why);

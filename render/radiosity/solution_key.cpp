@@ -1,6 +1,7 @@
 #include "render/radiosity/solution_key.hpp"
 
 #include "render/radiosity/scene_solution.hpp"
+#include "render/radiosity/solution_io.hpp"
 #include "scene/content_hash.hpp"
 
 namespace lumen::render::radiosity {
@@ -29,6 +30,7 @@ uint64_t solution_key(const RenderFrame& frame, const SceneMesh& mesh,
     // change how the solution is shown.
     h.add(options.method), h.add(effective_bounces(scene, options)), h.add(options.form_factors);
     h.add(options.ff_rays), h.add(options.hemicube_res), h.add(options.tolerance);
+    h.add(kSolutionFileVersion);  // what a stored solution holds
     h.add(bool(scene.globals.radiosity));
     if (const auto& r = scene.globals.radiosity) h.add(r->brightness), h.add(r->recursion_limit);
     h.add(scene.globals.ambient_light), h.add(scene.globals.assumed_gamma);
