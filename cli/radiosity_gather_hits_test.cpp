@@ -63,11 +63,9 @@ FloorHit floor_below(const render::RenderFrame& frame, const rad::SceneMesh& mes
 
 glm::dvec3 interpolated(const rad::SceneMesh& mesh, const std::vector<glm::dvec3>& values,
                         const FloorHit& f) {
-    const rad::MeshElement& el = mesh.elements[size_t(f.element)];
-    const uint32_t side = rad::seen_side(el, f.hit.normal, glm::dvec3(0, 1, 0));
-    glm::dvec3 v(0);
-    for (int k = 0; k < 3; ++k) v += f.bary[k] * values[2 * el.v[k] + side];
-    return v;
+    const uint32_t side =
+        rad::seen_side(mesh.elements[size_t(f.element)], f.hit.normal, glm::dvec3(0, 1, 0));
+    return rad::interpolate_sides(mesh, values, f.element, f.bary, side);
 }
 
 // A gather landing in the rod's shadow sees the shadow; the element's B, interpolated from

@@ -23,14 +23,6 @@ long element_at(const SceneMesh& mesh, const Hit& hit, const glm::dvec3& normal,
     return e;
 }
 
-glm::dvec3 interpolate_at(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, long e,
-                          const glm::dvec3& bary, bool front) {
-    const MeshElement& el = mesh.elements[size_t(e)];
-    const uint32_t side = front ? 0 : 1;
-    return bary.x * values[2 * el.v[0] + side] + bary.y * values[2 * el.v[1] + side] +
-           bary.z * values[2 * el.v[2] + side];
-}
-
 // The receivers' G where a hit lies on an element; a point gather elsewhere.
 class Preview final : public IndirectLight {
 public:
@@ -117,7 +109,8 @@ bool interpolate(const SceneMesh& mesh, const std::vector<glm::dvec3>& values, c
     glm::dvec3 bary;
     const long e = element_at(mesh, hit, normal, bary);
     if (e < 0) return false;
-    out = interpolate_at(mesh, values, e, bary, seen_side(mesh.elements[size_t(e)], hit.normal, normal) == 0);
+    out = interpolate_sides(mesh, values, e, bary,
+                            seen_side(mesh.elements[size_t(e)], hit.normal, normal));
     return true;
 }
 

@@ -126,9 +126,8 @@ glm::dvec3 PointGather::leaving(const Hit& hit, const glm::dvec3& dir, int level
         in = direct_light_at(frame_.lights(), frame_.geometry(), p, n, m.brilliance, counters);
     }
     if (element >= 0 && indirect_) {  // the solution's indirect light, over the element
-        const MeshElement& el = mesh_.elements[size_t(element)];
-        const uint32_t side = seen_side(el, hit.normal, -dir);
-        for (int k = 0; k < 3; ++k) in += bary[k] * (*indirect_)[2 * el.v[k] + side];
+        const uint32_t side = seen_side(mesh_.elements[size_t(element)], hit.normal, -dir);
+        in += interpolate_sides(mesh_, *indirect_, element, bary, side);
     } else if (B_ && level < s_.bounces) {
         in += incident(hit.point, n, level + 1);
     }

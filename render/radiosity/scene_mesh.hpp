@@ -97,6 +97,14 @@ struct SceneMesh {
     long find_near(const glm::dvec3& p, uint32_t slot, double slack, glm::dvec3& bary) const;
 };
 
+// Per-vertex-side `values` (2 v + side) interpolated at barycentric `bary` of element `e`.
+inline glm::dvec3 interpolate_sides(const SceneMesh& mesh, const std::vector<glm::dvec3>& values,
+                                    long e, const glm::dvec3& bary, uint32_t side) {
+    const MeshElement& el = mesh.elements[size_t(e)];
+    return bary.x * values[2 * el.v[0] + side] + bary.y * values[2 * el.v[1] + side] +
+           bary.z * values[2 * el.v[2] + side];
+}
+
 // The default patch size: 1/38 of the scene bounds diagonal (2.5 units in cornell.pov).
 double default_patch_size(const Aabb& bounds);
 
