@@ -122,30 +122,62 @@ void drop_repeats(std::vector<NodeHit>& hits, size_t first) {
 
 // Where along the ray a hit of member i can be kept: within its own surface box and, in an
 // intersection, inside every other member's solid box (widened by a rounding margin;
-// csg_accepts decides exactly). Members beyond the first 16 are not looked at for the latter
-// (the range is then only wider).
+// csg_accepts decides exactly) and outside the interior of every subtracted box (a
+// difference's inverse box member, untransformed, whose inside is exactly its slab interval,
+// narrowed by the margin): the room a ray starts in, cut out of a wall block, rules out every
+// other member's hits up to where the ray leaves it. Members beyond the first 16 are not
+// looked at (the range is then only wider).
 struct MemberRanges {
     static constexpr uint32_t kMax = 16;
     double enter[kMax], exit[kMax];
+    double cut_lo[kMax], cut_hi[kMax];  // (cut_lo, cut_hi): inside a subtracted box
     uint32_t count = 0;
+    bool any_cut = false;
+
+    static double margin(double t) { return 1e-6 * (1 + std::abs(t)); }
 
     MemberRanges(const NodeStore& store, const Node& n, const SlabRay& slab, double lo,
                  double hi) {
         if (n.kind != NodeKind::Intersection) return;
         count = std::min(n.child_count, kMax);
         for (uint32_t j = 0; j < count; ++j) {
-            const Aabb& box = store.nodes[store.links[n.children + j]].solid;
+            const Node& member = store.nodes[store.links[n.children + j]];
+            const Aabb& box = member.solid;
             double e = lo, x = hi;
             if (box.finite() && !slab.hits(box, lo, hi, e, x)) e = Aabb::inf, x = -Aabb::inf;
-            enter[j] = e - 1e-6 * (1 + std::abs(e));
-            exit[j] = x + 1e-6 * (1 + std::abs(x));
+            enter[j] = e - margin(e);
+            exit[j] = x + margin(x);
+            cut_lo[j] = Aabb::inf, cut_hi[j] = -Aabb::inf;
+            if (const Aabb* cut = subtracted_box(store, member))
+                if (slab.hits(*cut, -Aabb::inf, Aabb::inf, e, x)) {
+                    cut_lo[j] = e + margin(e), cut_hi[j] = x - margin(x);
+                    any_cut = any_cut || cut_lo[j] < cut_hi[j];
+                }
         }
+    }
+    // An inverse, untransformed, unclipped box: its interior is exactly the slab interval.
+    static const Aabb* subtracted_box(const NodeStore& store, const Node& m) {
+        if (m.kind != NodeKind::Shape || !m.inverse || !m.identity || m.clip_count ||
+            m.bound_count)
+            return nullptr;
+        const auto* box = std::get_if<BoxShape>(&store.shapes[m.shape]);
+        return box && box->valid ? &box->box : nullptr;
     }
     // Narrows (lo, hi) for member i (node c); false when no hit of it can be kept there.
     bool narrow(const NodeStore& store, const SlabRay& slab, uint32_t i, uint32_t c, double& lo,
                 double& hi) const {
         for (uint32_t j = 0; j < count; ++j)
             if (j != i) lo = std::max(lo, enter[j]), hi = std::min(hi, exit[j]);
+        // Cut intervals may chain (one box's exit inside the next): one pass per member.
+        for (uint32_t pass = 0; any_cut && pass < count && lo < hi; ++pass) {
+            bool moved = false;
+            for (uint32_t j = 0; j < count; ++j) {
+                if (j == i || !(cut_lo[j] < cut_hi[j])) continue;
+                if (cut_lo[j] <= lo && lo < cut_hi[j]) lo = cut_hi[j], moved = true;
+                if (cut_lo[j] < hi && hi <= cut_hi[j]) hi = cut_lo[j], moved = true;
+            }
+            if (!moved) break;
+        }
         const Aabb& box = store.nodes[c].surface;
         return lo < hi && !box.empty() && (!box.finite() || slab.hits(box, lo, hi));
     }
