@@ -13,14 +13,13 @@ namespace lumen::render::radiosity {
 namespace {
 
 constexpr const char* kMagic = "lumen-radiosity-solution";
-constexpr int kVersion = kSolutionFileVersion;
 
 [[noreturn]] void bad_file(const std::string& path, const std::string& why) {
     throw LumenError({}, "radiosity solution file '" + path + "': " + why);
 }
 
 void write_solution(const Solution& s, std::ostream& out) {
-    out << kMagic << ' ' << kVersion << '\n'
+    out << kMagic << ' ' << kSolutionFileVersion << '\n'
         << "scene " << s.scene_key << '\n'
         << "unknowns " << s.B.size() << '\n'
         << "bounces " << s.bounces << '\n';
@@ -51,8 +50,9 @@ Solution load_solution(const std::string& path, uint64_t scene_key, size_t unkno
     Solution s;
     size_t n = 0;
     if (!(in >> magic >> version) || magic != kMagic) bad_file(path, "not a lumen radiosity solution");
-    if (version != kVersion) bad_file(path, "version " + std::to_string(version) + " (lumen reads " +
-                                              std::to_string(kVersion) + ")");
+    if (version != kSolutionFileVersion)
+        bad_file(path, "version " + std::to_string(version) + " (lumen reads " +
+                           std::to_string(kSolutionFileVersion) + ")");
     if (!(in >> word >> s.scene_key) || word != "scene" || !(in >> word >> n) ||
         word != "unknowns" || !(in >> word >> s.bounces) || word != "bounces")
         bad_file(path, "malformed header");
