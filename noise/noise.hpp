@@ -30,6 +30,11 @@ double noise(const glm::dvec3& p, Generator generator);
 // A noise vector at p, each component about [-1, 1] (POV's DNoise()). It has no generator:
 // POV's displacements and bump directions always use the original lattice.
 glm::dvec3 dnoise(const glm::dvec3& p);
+namespace detail {
+// dnoise runs four lanes wide where the processor has AVX2; this is its two-lane form, which
+// runs elsewhere (exposed so that tests check that both give POV's bits).
+glm::dvec3 dnoise_in_pairs(const glm::dvec3& p);
+}  // namespace detail
 // Scalar turbulence (POV's Turbulence()): noise summed over `octaves`, each octave at
 // lambda times the frequency and omega times the amplitude of the one before. params.amount
 // is not used (the caller scales by it).

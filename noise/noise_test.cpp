@@ -141,6 +141,7 @@ TEST(Noise, OptimisedLoopsAreBitForBitPovsSums) {
             d.z += w * l.corner(c[0], c[1], c[2], 8, w);
         }
         ASSERT_EQ(dnoise(p), d) << i;
+        ASSERT_EQ(detail::dnoise_in_pairs(p), d) << i;
     }
 }
 
