@@ -4,5 +4,6 @@
 
 int main(int argc, char** argv) {
     lumen::grow_heaps_for_huge_pages();
-    return lumen::cli::run_command_line(std::vector<std::string>(argv + 1, argv + argc));
+    return lumen::cli::run_command_line(std::vector<std::string>(argv + 1, argv + argc),
+                                        /*process_ends=*/true);
 }

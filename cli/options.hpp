@@ -40,6 +40,9 @@ struct Options {
     bool help = false, version = false, dump_scene = false, check = false;
     bool radiosity_only = false;  // --radiosity-only: solve (and save) each frame's radiosity
     bool verbose = false;
+    // The process exits once the run is over (main's run, not a test's): what only the exit
+    // would free may be left to it (interp::InterpOptions::leave_for_exit).
+    bool process_ends = false;
 
     // Accepted for compatibility but with no effect (Display, Pause_When_Done, ...): noted so
     // the user learns they were ignored.

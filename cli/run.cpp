@@ -130,6 +130,8 @@ scene::Scene interpret_frame(const Options& o, const Frame& frame, SourceManager
     interp::InterpOptions scene_options = frame.scene;
     scene_options.object_queries = object_queries;                  // trace() and inside()
     scene_options.function_host = render::shared_function_host();  // pigment functions
+    // --check and --dump-scene end the process with their first frame; a render goes on.
+    scene_options.leave_for_exit = o.process_ends && (o.check || o.dump_scene);
     if (!frame.output.empty())  // #fopen may write beside the image
         scene_options.io_folders.push_back(
             std::filesystem::absolute(frame.output).parent_path().string());
@@ -184,11 +186,12 @@ int run_guarded(const std::function<int(SourceManager&)>& work) {
     return 1;
 }
 
-int run_command_line(const std::vector<std::string>& args) {
+int run_command_line(const std::vector<std::string>& args, bool process_ends) {
     if (!args.empty() && args[0] == "merge") return run_merge({args.begin() + 1, args.end()});
     if (!args.empty() && args[0] == "farm") return run_farm({args.begin() + 1, args.end()});
     return run_guarded([&](SourceManager& sources) {
-        const Options o = parse_command_line(args, sources);
+        Options o = parse_command_line(args, sources);
+        o.process_ends = process_ends;
         if (o.help) {
             std::fputs(usage_text().c_str(), stdout);
             return 0;

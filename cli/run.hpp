@@ -14,7 +14,8 @@ namespace lumen::cli {
 // Everything main() does, for the arguments after the program name (`lumen merge ...` and
 // `lumen farm ...` are subcommands: cli/merge.hpp, cli/farm.hpp). Returns the exit status:
 // 0 on success, 1 after printing a diagnostic (or, with --check, when features are missing).
-int run_command_line(const std::vector<std::string>& args);
+// main() says `process_ends`: the process exits when it returns.
+int run_command_line(const std::vector<std::string>& args, bool process_ends = false);
 
 // The scene of one frame as its render sees it: trace() and inside() through
 // `object_queries`, pigment functions, #fopen beside the image, the Radiosity switch applied.

@@ -1,6 +1,7 @@
 // interpret_text end to end: evaluated values reach the scene through the builders.
 #include <gtest/gtest.h>
 
+#include "interp/dump_scene.hpp"
 #include "interp/interpret.hpp"
 
 namespace lumen::interp {
@@ -29,6 +30,24 @@ TEST(InterpretTest, ComputedValuesReachTheScene) {
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(sphere_at(s, 0).center, glm::dvec3(2, 4, 6));
     EXPECT_DOUBLE_EQ(sphere_at(s, 0).radius, 1.0);
+}
+
+TEST(InterpretTest, ASceneLeftForTheExitIsTheSameScene) {
+    // With leave_for_exit the evaluator and the tree outlive the call (the process frees them
+    // as it exits); what reaches the scene from them (declared textures, compiled functions,
+    // macro output, literal runs of a mesh) must not depend on it.
+    const std::string text =
+        "#declare T = texture { pigment { granite scale 0.2 } finish { phong 0.5 } }\n"
+        "#declare F = function(x, y, z) { x * x + y * y + z * z - 1 }\n"
+        "#macro Ball(P) sphere { P, 0.5 texture { T } } #end\n"
+        "#for (I, 0, 3) Ball(<I, 0, 0>) #end\n"
+        "isosurface { function { F(x, y, z) } contained_by { box { -2, 2 } } }\n"
+        "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }\n";
+    InterpOptions left;
+    left.leave_for_exit = true;
+    const std::string kept = dump_scene_json(interpret(text));
+    EXPECT_EQ(dump_scene_json(interpret(text, left)), kept);
+    EXPECT_NE(kept.find("isosurface"), std::string::npos);
 }
 
 TEST(InterpretTest, LoopsMakeObjects) {

@@ -3,7 +3,9 @@
 #include "interp/interpret.hpp"
 
 #include <filesystem>
+#include <memory>
 
+#include "base/sanitizers.hpp"
 #include "interp/builders.hpp"
 #include "interp/conversions.hpp"
 #include "interp/evaluator.hpp"
@@ -23,7 +25,8 @@ const char* item_word(const Item& item) {
 
 scene::Scene run(SourceManager& sources, const SourceFile& file, const InterpOptions& options,
                  const WarningSink& warn) {
-    Evaluator ev(sources, options, warn);
+    auto evaluator = std::make_unique<Evaluator>(sources, options, warn);
+    Evaluator& ev = *evaluator;
     for (const InterpOptions::Declare& d : options.declares) {
         Value v = d.number ? Value{six_digits(*d.number), {}} : Value{d.text, {}};
         ev.symbols.declare(d.name, std::move(v));
@@ -40,6 +43,10 @@ scene::Scene run(SourceManager& sources, const SourceFile& file, const InterpOpt
     scene.language_version = ev.ctx.language_version;
     scene.version_given = ev.ctx.version_given;
     finish_scene(ev.ctx, scene);
+    if (options.leave_for_exit && !LUMEN_ASAN) {
+        (void)evaluator.release();
+        (void)tree.release();
+    }
     return scene;
 }
 
