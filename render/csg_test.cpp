@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "render/geometry_test_util.hpp"
+#include "render/node.hpp"
 
 namespace lumen::render {
 namespace {
@@ -362,6 +363,45 @@ TEST(Csg, RetriesAlongARayGetTheAnswersOfFreshTraces) {
         surfaces += int(walked.size());
     }
     EXPECT_GT(surfaces, 300);
+}
+
+// A quarter of a long rotated ellipsoid cut out by planes along its own axes (abyss.pov's
+// submarine hull): the intersection is boxed as that quarter in its own frame, then rotated,
+// as POV-Ray boxes it; in world space the rotated planes bound nothing. The box culls rays
+// that meet only the rest of the ellipsoid's box, and the hits are the same.
+TEST(Csg, ARotatedIntersectionIsBoxedInItsOwnFrame) {
+    auto hull = make(scene::Sphere{{0, 0, 0}, 1});
+    hull->transform = scale({1, 1, 10});
+    auto cut = [](glm::dvec3 n, bool inverse) {
+        auto p = make(scene::Plane{n, 0});
+        p->inverse = inverse;
+        return p;
+    };
+    // Keeps y > 0, z > 0 and x < 0.
+    auto quarter = csg(CsgOp::Difference, {hull, cut({0, 1, 0}, false), cut({0, 0, 1}, false),
+                                           cut({1, 0, 0}, true)});
+    quarter->transform = rotate(-15, {0, 1, 0});
+    NodeStore store;
+    const Node& node = store.nodes[compile_object(store, *quarter, NodeContext{})];
+    ASSERT_TRUE(node.surface.finite());
+    // The rotated quarter: x in [-(cos 15 + 10 sin 15), 0] and z in [-sin 15, 10 cos 15],
+    // where the whole ellipsoid spans x and z in +-(cos 15 + 10 sin 15), +-(sin 15 + 10 cos 15).
+    const double c = std::cos(glm::radians(15.0)), s = std::sin(glm::radians(15.0));
+    EXPECT_NEAR(node.surface.lo.x, -(c + 10 * s), 1e-6);
+    EXPECT_NEAR(node.surface.hi.x, 0, 1e-6);
+    EXPECT_NEAR(node.surface.lo.z, -s, 1e-6);
+    EXPECT_NEAR(node.surface.hi.z, 10 * c, 1e-6);
+    EXPECT_NEAR(node.surface.lo.y, 0, 1e-6);
+    EXPECT_NEAR(node.surface.hi.y, 1, 1e-6);
+    Geometry g(scene_of({quarter}));
+    // Every crossing found where the point test says the inside changes.
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 400; ++i)
+        rays.push_back(ray({2 * u(rng) - 1.5, 0.7 * u(rng) + 0.5, 12 * u(rng) - 20},
+                           {0.1 * u(rng), 0.03 * u(rng), 1}));
+    EXPECT_GT(expect_surfaces_where_inside_changes(g, *quarter, rays, 60), 100);
 }
 
 }  // namespace

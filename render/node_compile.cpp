@@ -37,6 +37,37 @@ void fit_members(NodeStore& store, const std::vector<uint32_t>& kids) {
     }
 }
 
+// A member's solid box in the frame of the intersection it belongs to, where only its own
+// transform applies: a plane along that frame's axes bounds a half-space there, though the
+// intersection's rotation leaves it unbounded in world space.
+Aabb solid_in_frame(const NodeStore& store, const Node& m, const scene::Transform& from_world) {
+    if (m.solid.empty()) return m.solid;
+    const scene::Object& o = *m.object;
+    if (m.kind == NodeKind::Shape)
+        if (const auto* p = std::get_if<scene::Plane>(&o.shape)) {
+            PlaneShape plane = make_plane(*p);
+            if (!plane.valid || !ShapeTraits<scene::Plane>::bake(*p, o.transform, plane))
+                return Aabb::everything();
+            return m.inverse ? complement_solid_bounds(plane) : solid_bounds(plane);
+        }
+    if (m.kind == NodeKind::Shape && !m.identity && !m.inverse)
+        return transformed(shape_solid_bounds(store.shapes[m.shape]), o.transform);
+    return transformed(m.solid, from_world);
+}
+
+// POV-Ray bounds an intersection in its own frame, by the overlap of its members' boxes
+// there, and then transforms that box: the quarter of a rotated blob that three planes
+// along its axes cut out is boxed as that quarter, not as the whole blob.
+Aabb framed_bounds(const NodeStore& store, const std::vector<uint32_t>& kids,
+                   const scene::Transform& world) {
+    const scene::Transform from_world{world.inv, world.m};
+    Aabb frame = Aabb::everything();
+    for (uint32_t k : kids)
+        frame = intersect(frame, solid_in_frame(store, store.nodes[k], from_world));
+    if (frame.empty() || !frame.finite()) return Aabb::everything();
+    return padded(transformed(frame, world));
+}
+
 bool transform_is_finite(const scene::Transform& xf) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -197,7 +228,11 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
             else solid.expand(child.solid);
             if (bounds_overlap[i]) overlap = intersect(overlap, child.surface);
         }
-        if (node.kind == NodeKind::Intersection) surface = intersect(intersect(surface, solid), overlap);
+        if (node.kind == NodeKind::Intersection) {
+            if (!world.is_identity() && transform_is_finite(world))
+                solid = intersect(solid, framed_bounds(store, kids, world));
+            surface = intersect(intersect(surface, solid), overlap);
+        }
         if (kids.empty()) solid = surface = Aabb{};
         node.surface = surface;
         node.solid = solid;
