@@ -235,13 +235,18 @@ void element_boxes(const BlobShape& s, const BlobElement& e, std::vector<Aabb>& 
 
 void build_tree(BlobShape& s) {
     std::vector<Aabb> boxes;
+    Aabb positive;
     for (size_t i = 0; i < s.elements.size(); ++i) {
+        const size_t first = boxes.size();
         element_boxes(s, s.elements[i], boxes);
         s.box_element.resize(boxes.size(), uint32_t(i));
+        if (s.elements[i].c[2] > 0)
+            for (size_t k = first; k < boxes.size(); ++k) positive.expand(boxes[k]);
     }
     s.pieces = boxes.size() > s.elements.size();
     s.tree.build(boxes, kLeafSize);
     s.box = s.tree.bounds();
+    s.bound = s.threshold > kInsideTolerance ? positive : s.box;
 }
 
 }  // namespace

@@ -37,7 +37,11 @@ struct BlobShape {
     Bvh tree;
     std::vector<uint32_t> box_element;
     bool pieces = false;
-    Aabb box;
+    Aabb box;    // every element's box: the span the solver's sweep is scaled to
+    // Where the blob can be: the boxes of its elements of positive strength alone, as
+    // POV-Ray bounds a blob (elsewhere the density is at most 0, below any threshold above
+    // the inside test's tolerance); `box` for a lower threshold.
+    Aabb bound;
     // The components' own textures (null: the blob's), when any component has one.
     std::vector<const scene::LayeredTexture*> textures;
     bool textured = false;
@@ -46,8 +50,8 @@ struct BlobShape {
 BlobShape make_blob(const scene::Blob& b);
 bool intersect(const BlobShape& s, const LocalRay& r, double tmin, double tmax, ShapeHit& h);
 bool inside(const BlobShape& s, const glm::dvec3& p);
-inline Aabb bounds(const BlobShape& s) { return s.box; }
-inline Aabb solid_bounds(const BlobShape& s) { return s.box; }
+inline Aabb bounds(const BlobShape& s) { return s.bound; }
+inline Aabb solid_bounds(const BlobShape& s) { return s.bound; }
 
 // The summed density at p minus nothing (compare with s.threshold), and its gradient.
 double blob_density(const BlobShape& s, const glm::dvec3& p);

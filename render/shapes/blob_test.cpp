@@ -174,5 +174,21 @@ TEST(Blob, LongCylindersBoxedInPiecesCountOnce) {
     EXPECT_NEAR(hit->t, 5 - axis_y - std::sqrt(r * r - along_z * along_z), 1e-3);
 }
 
+// The density is at most 0 outside the components of positive strength, so the blob lies
+// within their boxes: abyss.pov's hull carves its portholes with long negative cylinders that
+// reach far beyond it. Not for a threshold so low that the inside test passes at density 0.
+TEST(Blob, BoxedByItsPositiveComponentsAlone) {
+    const BlobShape s = make_blob(blob(0.6, {sphere({0, 0, 0}, 1, 1),
+                                             cylinder({0, 0, -6}, {0, 0, 3}, 0.2, -1)}));
+    EXPECT_NEAR(bounds(s).lo.z, -1, 1e-9);
+    EXPECT_NEAR(bounds(s).hi.z, 1, 1e-9);
+    EXPECT_LE(s.box.lo.z, -6.2);  // the solver's span still holds the cylinder
+    EXPECT_FALSE(inside(s, {0, 0, -4}));
+    const BlobShape low = make_blob(blob(1e-7, {sphere({0, 0, 0}, 1, 1),
+                                                cylinder({0, 0, -6}, {0, 0, 3}, 0.2, -1)}));
+    EXPECT_TRUE(inside(low, {0, 5, 0}));
+    EXPECT_LE(solid_bounds(low).lo.z, -6.2);
+}
+
 }  // namespace
 }  // namespace lumen::render
