@@ -204,7 +204,10 @@ struct Geometry::Impl {
         } else {
             double prune = limit;
             bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
-                if (bounded[i].hidden & hide) return;
+                // A leaf's box holds both its roots: one may be a small object beside a huge
+                // one (abyss.pov's media sphere), which every ray enters.
+                if ((bounded[i].hidden & hide) || !slab.hits(bounded_boxes[i], t_min, limit))
+                    return;
                 visit(bounded[i]);
                 prune = limit;
             });

@@ -159,6 +159,34 @@ TEST(GeometryDeterminism, CoincidentSurfacesResolveToTheFirstObject) {
     }
 }
 
+// An object is met only by rays that cross its own box, whatever shares its leaf of the
+// scene's tree, as POV-Ray culls: desk.pov's paperweight, a sphere cut by a disc, is boxed by
+// the disc's flat box, so a level ray through its dome misses it in POV-Ray. With a huge
+// sphere around them (abyss.pov's media container, which every ray enters) in the tree,
+// some dome may share its leaf; none may be met.
+TEST(GeometryCulling, AnObjectIsMetOnlyWhereTheRayCrossesItsOwnBox) {
+    std::vector<scene::ObjectPtr> objects{make(scene::Sphere{{0, 0, 0}, 1000})};
+    const int kDomes = 12;
+    for (int i = 0; i < kDomes; ++i) {
+        const glm::dvec3 at{100.0 * (i - kDomes / 2), 0, 0};
+        objects.push_back(csg(scene::CsgOp::Intersection,
+                              {make(scene::Sphere{at + glm::dvec3(0, -5, 0), 10}),
+                               make(scene::Disc{at, {0, -1, 0}, 10.1})}));
+    }
+    Geometry g(scene_of(objects));
+    for (int i = 0; i < kDomes; ++i) {
+        const double x = 100.0 * (i - kDomes / 2);
+        // Straight down onto the dome: the ray crosses the flat box below it.
+        const auto down = trace(g, ray({x, 50, 0}, {0, -1, 0}));
+        ASSERT_TRUE(down);
+        EXPECT_NEAR(down->t, 45, 1e-9) << "dome " << i;
+        // Level through the dome, above its flat box: only the huge sphere, from inside.
+        const auto level = trace(g, ray({x, 2, -50}, {0, 0, 1}));
+        ASSERT_TRUE(level);
+        EXPECT_NEAR(level->t, 50 + std::sqrt(1000.0 * 1000 - x * x - 4), 1e-6) << "dome " << i;
+    }
+}
+
 TEST(GeometryErrors, UnsupportedShapeThrowsWithItsName) {
     auto iso = make(scene::UnsupportedShape{{"isosurface", {}}});
     iso->loc.line = 7;
