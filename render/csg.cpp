@@ -133,6 +133,25 @@ struct MemberRanges {
     double cut_lo[kMax], cut_hi[kMax];  // (cut_lo, cut_hi): inside a subtracted box
     uint32_t count = 0;
     bool any_cut = false;
+    // The latest entry and earliest exit over the members, which member gives each, and the
+    // same over the rest: a member's range is bounded by every other member's box in O(1).
+    double latest = -Aabb::inf, next_latest = -Aabb::inf;
+    double earliest = Aabb::inf, next_earliest = Aabb::inf;
+    uint32_t latest_at = kMax, earliest_at = kMax;
+    // The same over the finite boxes (and the missed ones) alone, for a member whose hits
+    // depend on the range its search is given (Node::range_sensitive).
+    double latest_finite = -Aabb::inf, next_latest_finite = -Aabb::inf;
+    double earliest_finite = Aabb::inf, next_earliest_finite = Aabb::inf;
+    uint32_t latest_finite_at = kMax, earliest_finite_at = kMax;
+
+    static void keep_latest(double e, uint32_t j, double& first, double& second, uint32_t& at) {
+        if (e > first) second = first, first = e, at = j;
+        else second = std::max(second, e);
+    }
+    static void keep_earliest(double x, uint32_t j, double& first, double& second, uint32_t& at) {
+        if (x < first) second = first, first = x, at = j;
+        else second = std::min(second, x);
+    }
 
     static double margin(double t) { return 1e-6 * (1 + std::abs(t)); }
 
@@ -144,9 +163,19 @@ struct MemberRanges {
             const Node& member = store.nodes[store.links[n.children + j]];
             const Aabb& box = member.solid;
             double e = lo, x = hi;
-            if (box.finite() && !slab.hits(box, lo, hi, e, x)) e = Aabb::inf, x = -Aabb::inf;
-            enter[j] = e - margin(e);
-            exit[j] = x + margin(x);
+            if (!slab.hits(box, lo, hi, e, x)) {  // a half-space's box narrows too
+                enter[j] = Aabb::inf, exit[j] = -Aabb::inf;  // no margin: inf - inf is NaN
+            } else {
+                enter[j] = e - margin(e);
+                exit[j] = x + margin(x);
+            }
+            keep_latest(enter[j], j, latest, next_latest, latest_at);
+            keep_earliest(exit[j], j, earliest, next_earliest, earliest_at);
+            if (box.finite() || !(enter[j] < Aabb::inf)) {
+                keep_latest(enter[j], j, latest_finite, next_latest_finite, latest_finite_at);
+                keep_earliest(exit[j], j, earliest_finite, next_earliest_finite,
+                              earliest_finite_at);
+            }
             cut_lo[j] = Aabb::inf, cut_hi[j] = -Aabb::inf;
             if (const Aabb* cut = subtracted_box(store, member))
                 if (slab.hits(*cut, -Aabb::inf, Aabb::inf, e, x)) {
@@ -166,8 +195,15 @@ struct MemberRanges {
     // Narrows (lo, hi) for member i (node c); false when no hit of it can be kept there.
     bool narrow(const NodeStore& store, const SlabRay& slab, uint32_t i, uint32_t c, double& lo,
                 double& hi) const {
-        for (uint32_t j = 0; j < count; ++j)
-            if (j != i) lo = std::max(lo, enter[j]), hi = std::min(hi, exit[j]);
+        if (count > 0) {
+            if (store.nodes[c].range_sensitive) {
+                lo = std::max(lo, i == latest_finite_at ? next_latest_finite : latest_finite);
+                hi = std::min(hi, i == earliest_finite_at ? next_earliest_finite : earliest_finite);
+            } else {
+                lo = std::max(lo, i == latest_at ? next_latest : latest);
+                hi = std::min(hi, i == earliest_at ? next_earliest : earliest);
+            }
+        }
         // Cut intervals may chain (one box's exit inside the next): one pass per member.
         for (uint32_t pass = 0; any_cut && pass < count && lo < hi; ++pass) {
             bool moved = false;

@@ -289,6 +289,38 @@ TEST(Csg, EveryHitIsWhereInsideChangesAndNowhereElse) {
     EXPECT_GT(expect_surfaces_where_inside_changes(g, *cut, rays, 12.0), 2000);
 }
 
+TEST(Csg, HalfSpaceMembersNarrowTheOthersAndKeepEverySurface) {
+    // chess2.pov's rook: its battlements are unions of planes (merges here: a union keeps
+    // the surfaces inside it, where the point test does not change) and its body a cylinder
+    // with a bore between two planes. A member's hits are sought only where the ray is inside
+    // every other member's box, a plane's half-space included; rays from outside, from the
+    // bore and from within the walls, some along the axes, meet every surface.
+    auto plane = [](glm::dvec3 n, double d) { return make(scene::Plane{n, d}); };
+    auto bore = make(scene::Quadric{{1, 0, 1}, {0, 0, 0}, {0, 0, 0}, -1.44});
+    bore->inverse = true;
+    auto rook = csg(CsgOp::Intersection,
+                    {csg(CsgOp::Merge, {plane({1, 0, 0}, -0.5), plane({-1, 0, 0}, -0.5),
+                                        plane({0, 1, 0}, 9)}),
+                     csg(CsgOp::Merge, {plane({0, 0, 1}, -0.5), plane({0, 0, -1}, -0.5),
+                                        plane({0, 1, 0}, 9)}),
+                     plane({0, 1, 0}, 10),
+                     make(scene::Quadric{{1, 0, 1}, {0, 0, 0}, {0, 0, 0}, -4}), bore,
+                     plane({0, -1, 0}, -8)});
+    Geometry g(scene_of({rook}));
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::dvec3 from = i % 3 == 0 ? glm::dvec3(6 * u(rng), 9 + 4 * u(rng), -8)
+                                           : glm::dvec3(2 * u(rng), 9 + 1.5 * u(rng), 2 * u(rng));
+        glm::dvec3 dir{u(rng), u(rng), u(rng)};
+        if (i % 3 == 0) dir.z = 1;
+        if (i % 7 == 0) dir = glm::dvec3(0, 0, 0), dir[i % 3] = u(rng) < 0 ? -1 : 1;
+        rays.push_back(ray(from, dir));
+    }
+    EXPECT_GT(expect_surfaces_where_inside_changes(g, *rook, rays, 30.0), 1500);
+}
+
 TEST(Csg, RaysFromInsideSubtractedBoxesMeetEverySurface) {
     // A wall block with rooms cut out of it (radiosity/radiosity_36.pov's courtyard): a ray
     // that starts in a cut-out room skips the other members' hits up to where it leaves the

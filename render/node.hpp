@@ -26,6 +26,10 @@ struct Node {
     bool no_image = false, no_reflection = false, double_illuminate = false,
          no_radiosity = false, hollow = false;  // likewise (reported in Hit)
     bool needs_uv = false;   // its texture uses uv_mapping: hits get their (u, v); not baked
+    // Its hits depend on the range a search is given, not only on which of them lie in it
+    // (a julia fractal marches from its start to its end), here or in a member: a CSG
+    // narrows that range by its other members' finite boxes alone (csg.cpp), as it always did.
+    bool range_sensitive = false;
     double min_depth = kDepthDefault;
     uint32_t xf = 0;         // NodeStore::transforms: object -> world (when !identity)
     Aabb surface;            // world box of the points a hit can be at

@@ -210,6 +210,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
             if (!csg->children[i]) continue;
             inner.invert = csg->op == scene::CsgOp::Difference && i > 0;
             kids.push_back(compile_object(store, *csg->children[i], inner, accelerate));
+            node.range_sensitive = node.range_sensitive || store.nodes[kids.back()].range_sensitive;
             bounds_overlap.push_back(
                 !store.nodes[kids.back()].inverse &&
                 !std::holds_alternative<scene::HeightField>(csg->children[i]->shape));
@@ -252,6 +253,7 @@ uint32_t compile_object(NodeStore& store, const scene::Object& object, const Nod
             store.transforms.push_back(world);
         }
         node.min_depth = min_depth_of(object.shape);
+        node.range_sensitive = std::holds_alternative<JuliaFractalShape>(data);
         // Object-space boxes: where the shape can be hit, and where it can be inside.
         Aabb surface = shape_bounds(data), solid = shape_solid_bounds(data);
         if (!finite) surface = solid = Aabb{};  // singular transform: never hit
