@@ -37,5 +37,19 @@ TEST_F(FunctionHost, PigmentPatternAndTransformFunctionsMatchPovRay) {
     EXPECT_EQ(debug_output(), kPovRay);
 }
 
+// The host keeps the last colour it made, per thread, for the channels asked one by one at
+// the same point: another pigment, or another point, is a new colour.
+TEST_F(FunctionHost, ChannelsAskedInTurnComeFromTheirOwnPigmentAndPoint) {
+    options.function_host = render::shared_function_host();
+    run(R"(#version 3.7;
+#declare P = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0.25>] } } }
+#declare Q = function { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }
+#debug concat(str(P(0.5, 0.25, 0).red, 0, 4), " ", str(Q(0.5, 0.25, 0).red, 0, 4), " ",
+              str(P(0.5, 0.25, 0).green, 0, 4), " ", str(P(0.25, 0.5, 0).blue, 0, 4), " ",
+              str(Q(0.5, 0.75, 0).green, 0, 4), "\n")
+)");
+    EXPECT_EQ(debug_output(), "0.5000 0.2500 0.2500 0.0625 0.7500\n");
+}
+
 }  // namespace
 }  // namespace lumen::cli

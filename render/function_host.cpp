@@ -1,5 +1,8 @@
 #include "render/function_host.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "render/pattern.hpp"
 #include "render/pigment.hpp"
 
@@ -16,10 +19,23 @@ public:
             out[0] = pigment ? pattern_value(pigment->pattern, p) : 0;
             return;
         }
-        // POV-Ray's colours are single precision: 0.3 comes back as 0.30000001192092896.
-        const scene::Colour c = evaluate_pigment(pigment, p);
-        const float channels[5] = {float(c.r), float(c.g), float(c.b), float(c.f), float(c.t)};
-        for (int i = 0; i < 5; ++i) out[i] = channels[i];
+        // A colour's channels are asked for one by one at the same point (a height_field's
+        // pigment function, `.red`, `.green` and `.blue` side by side): the last colour is
+        // kept, per thread, for its pigment (by content: an address may be reused) and point.
+        thread_local struct {
+            const void* pigment = nullptr;
+            uint64_t content = 0;
+            glm::dvec3 p{0};
+            float channels[5] = {};
+        } last;
+        if (!(last.pigment == pigment && last.content == e.content && last.p == p)) {
+            // POV-Ray's colours are single precision: 0.3 comes back as 0.30000001192092896.
+            const scene::Colour c = evaluate_pigment(pigment, p);
+            const float channels[5] = {float(c.r), float(c.g), float(c.b), float(c.f), float(c.t)};
+            std::copy(channels, channels + 5, last.channels);
+            last.pigment = pigment, last.content = e.content, last.p = p;
+        }
+        for (int i = 0; i < 5; ++i) out[i] = last.channels[i];
     }
 };
 
