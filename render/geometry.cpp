@@ -204,10 +204,7 @@ struct Geometry::Impl {
         } else {
             double prune = limit;
             bvh.traverse(slab, t_min, prune, [&](uint32_t i) {
-                // A leaf's box holds both its roots: one may be a small object beside a huge
-                // one (abyss.pov's media sphere), which every ray enters.
-                if ((bounded[i].hidden & hide) || !slab.hits(bounded_boxes[i], t_min, limit))
-                    return;
+                if (bounded[i].hidden & hide) return;
                 visit(bounded[i]);
                 prune = limit;
             });
@@ -298,7 +295,10 @@ Geometry::Geometry(const std::vector<scene::ObjectPtr>& objects) : impl_(std::ma
             impl_->unbounded.push_back(make_root(store, r, false));
         }
     }
-    impl_->bvh.build(boxes, 2);
+    // One root a leaf, so a root is visited only by rays that cross its own box: a leaf of
+    // two would pair a small object with a huge one (abyss.pov's media sphere, which every
+    // ray enters) and take it into every ray.
+    impl_->bvh.build(boxes, 1);
     for (uint32_t i : impl_->bvh.order()) {
         impl_->bounded.push_back(make_root(store, finite[i], true));
         impl_->bounded_boxes.push_back(boxes[i]);
