@@ -147,11 +147,19 @@ std::optional<double> projected_reach(const LightSource& l, const glm::dvec3& po
     return hit.t;
 }
 
-glm::dvec3 area_sample_position(const LightSource& l, double u, double v,
-                                const glm::dvec3& to_light) {
+AreaAxes area_axes(const LightSource& l, const glm::dvec3& to_light) {
+    if (!l.orient) return {l.axis1, l.axis2};
+    // Rebuilt perpendicular to the light ray, keeping |axis1|.
+    const double len = glm::length(l.axis1);
+    glm::dvec3 helper = std::fabs(to_light.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 axis1 = glm::normalize(glm::cross(to_light, helper)) * len;
+    return {axis1, glm::normalize(glm::cross(to_light, axis1)) * len};
+}
+
+glm::dvec3 area_sample_position(const LightSource& l, const AreaAxes& axes, double u,
+                                double v) {
     double a = l.n1 > 1 ? u / (l.n1 - 1) - 0.5 : 0.0;
     double b = l.n2 > 1 ? v / (l.n2 - 1) - 0.5 : 0.0;
-    glm::dvec3 axis1 = l.axis1, axis2 = l.axis2;
     if (l.circular && l.n1 > 1 && l.n2 > 1) {
         // Map the square onto a disc (the small offset keeps the centre defined).
         a += 0.001;
@@ -160,14 +168,7 @@ glm::dvec3 area_sample_position(const LightSource& l, double u, double v,
         a *= s;
         b *= s;
     }
-    if (l.orient) {
-        // Rebuild the axes perpendicular to the light ray, keeping |axis1|.
-        const double len = glm::length(l.axis1);
-        glm::dvec3 helper = std::fabs(to_light.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-        axis1 = glm::normalize(glm::cross(to_light, helper)) * len;
-        axis2 = glm::normalize(glm::cross(to_light, axis1)) * len;
-    }
-    return l.position + a * axis1 + b * axis2;
+    return l.position + a * axes.axis1 + b * axes.axis2;
 }
 
 }  // namespace lumen::render

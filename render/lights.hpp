@@ -67,9 +67,21 @@ inline std::optional<double> projection_reach(const LightSource& light, const gl
     return projected_reach(light, point, dir, distance);
 }
 
+// An area light's axes as seen from one point: its own, or with `orient` rebuilt
+// perpendicular to `to_light` (unit, point -> light centre). The same for every sample of
+// the point's grid, so made once per point.
+struct AreaAxes {
+    glm::dvec3 axis1, axis2;
+};
+AreaAxes area_axes(const LightSource& light, const glm::dvec3& to_light);
+
 // World position of area-light grid sample (u, v), given as fractional grid indices so jitter
-// can move it; `to_light` (unit, point -> light centre) is used by `orient`.
-glm::dvec3 area_sample_position(const LightSource& light, double u, double v,
-                                const glm::dvec3& to_light);
+// can move it.
+glm::dvec3 area_sample_position(const LightSource& light, const AreaAxes& axes, double u,
+                                double v);
+inline glm::dvec3 area_sample_position(const LightSource& light, double u, double v,
+                                       const glm::dvec3& to_light) {
+    return area_sample_position(light, area_axes(light, to_light), u, v);
+}
 
 }  // namespace lumen::render

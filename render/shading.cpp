@@ -34,8 +34,8 @@ public:
     AreaShadow(const LightSource& l, const SurfaceSample& s, const LightSample& centre,
                const LightingEnv& env, const InteriorList& interiors, ThreadState& state,
                Occluder* occluder)
-        : l_(l), s_(s), centre_(centre), env_(env), interiors_(interiors), state_(state),
-          occluder_(occluder) {
+        : l_(l), s_(s), centre_(centre), axes_(area_axes(l, centre.dir)), env_(env),
+          interiors_(interiors), state_(state), occluder_(occluder) {
         const size_t n = size_t(l.n1) * l.n2;
         state.area_filter.resize(n);
         state.area_valid.assign(n, 0);
@@ -52,7 +52,7 @@ private:
                 ju += state_.uniform() - 0.5;
                 jv += state_.uniform() - 0.5;
             }
-            const glm::dvec3 pos = area_sample_position(l_, ju, jv, centre_.dir);
+            const glm::dvec3 pos = area_sample_position(l_, axes_, ju, jv);
             glm::dvec3 to = pos - s_.point;
             double dist = glm::length(to);
             if (l_.parallel) {
@@ -97,6 +97,7 @@ private:
     const LightSource& l_;
     const SurfaceSample& s_;
     const LightSample& centre_;
+    const AreaAxes axes_;
     const LightingEnv& env_;
     const InteriorList& interiors_;
     ThreadState& state_;

@@ -252,6 +252,25 @@ TEST(Lights, AreaGridSpansTheWholeAxes) {
     EXPECT_NEAR(last.z, 2, 1e-12);
 }
 
+// `orient` turns the grid to face the point, both axes |axis1| long: made once per point
+// (area_axes) for all of its samples.
+TEST(Lights, OrientedAxesFaceThePoint) {
+    scene::Light l;
+    l.area = scene::AreaLight{{2, 0, 0}, {0, 0, 4}, 3, 5};
+    l.area->orient = true;
+    const auto p = prepare_lights({l});
+    const glm::dvec3 to_light = glm::normalize(glm::dvec3(1, 1, 0.5));
+    const AreaAxes axes = area_axes(p[0], to_light);
+    EXPECT_NEAR(glm::dot(axes.axis1, to_light), 0, 1e-12);
+    EXPECT_NEAR(glm::dot(axes.axis2, to_light), 0, 1e-12);
+    EXPECT_NEAR(glm::dot(axes.axis1, axes.axis2), 0, 1e-12);
+    EXPECT_NEAR(glm::length(axes.axis2), 2, 1e-12);
+    const glm::dvec3 far = area_sample_position(p[0], 2, 4, to_light);
+    EXPECT_EQ(far, area_sample_position(p[0], axes, 2, 4));
+    EXPECT_NEAR(glm::dot(far - p[0].position, to_light), 0, 1e-12);
+    EXPECT_GT(glm::distance(far, p[0].position), 0.5);
+}
+
 TEST(Shadows, InteriorFadeFormula) {
     scene::Interior in;
     in.fade_distance = 1;
