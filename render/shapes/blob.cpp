@@ -362,7 +362,7 @@ void collect_window(const BlobShape& s, const glm::dvec3& o, const glm::dvec3& d
 
 // The first window's share of the ray's span through the blob's box; each next window is
 // twice as long as the one before.
-constexpr double kFirstWindow = 1.0 / 8;
+constexpr double kFirstWindow = 1.0 / 2;
 
 }  // namespace
 
