@@ -187,5 +187,38 @@ TEST(Superellipsoid, NZeroAndFarAway) {
     EXPECT_FALSE(trace(bad, ray({0, 0, -5}, {0, 0, 1})));
 }
 
+// A nearest-hit query stops at the first piece of the ray past a hit it found; every piece
+// gives the same nearest hit beyond the query's start, from outside, inside and on the
+// surface, for round, boxy and pinched shapes.
+TEST(Superellipsoid, TheNearestHitIsTheFullSearchsNearestBeyondTheStart) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int hits = 0;
+    for (const scene::Superellipsoid shape : {scene::Superellipsoid{1, 1},
+                                              scene::Superellipsoid{0.2, 0.3},
+                                              scene::Superellipsoid{2.5, 1.5}}) {
+        const SuperellipsoidShape s = make_superellipsoid(shape);
+        for (int i = 0; i < 3000; ++i) {
+            const glm::dvec3 o{1.6 * u(rng), 1.6 * u(rng), 1.6 * u(rng)};
+            const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+            const double tmin = i % 2 ? 1e-4 : 0.7 * std::fabs(u(rng));
+            // As intersect() asks, along the direction made unit again.
+            const double len = glm::length(d);
+            double ks[kMaxSuperellipsoidHits];
+            const int n = superellipsoid_hits(s, o, d / len, len, ks);
+            double nearest = std::numeric_limits<double>::infinity();
+            for (int j = 0; j < n; ++j)
+                if (ks[j] / len > tmin) nearest = std::min(nearest, ks[j] / len);
+            ShapeHit h;
+            const bool hit = intersect(s, LocalRay{o, d}, tmin, 1e30, h);
+            ASSERT_EQ(hit, nearest < 1e30) << i;
+            if (!hit) continue;
+            ASSERT_EQ(h.t, nearest) << i;
+            ++hits;
+        }
+    }
+    EXPECT_GT(hits, 1500);
+}
+
 }  // namespace
 }  // namespace lumen::render

@@ -171,7 +171,7 @@ double superellipsoid_value(const SuperellipsoidShape& s, const glm::dvec3& p) {
 }
 
 int superellipsoid_hits(const SuperellipsoidShape& s, const glm::dvec3& o, const glm::dvec3& d,
-                        double len, double* ks) {
+                        double len, double* ks, double nearest_beyond) {
     double t1, t2;
     if (!clip_to_box(o, d, t1, t2) || t2 < kDepthSuperellipsoid) return 0;
     t1 = std::max(t1, kDepthSuperellipsoid);
@@ -194,7 +194,17 @@ int superellipsoid_hits(const SuperellipsoidShape& s, const glm::dvec3& o, const
     glm::dvec3 p0 = o + dists[0] * d;
     double v0 = search.f(p0);
     if (std::fabs(v0) < kZero && valid(dists[0])) ks[n++] = dists[0];
+    // The nearest hit beyond `nearest_beyond` so far: a piece starting past it (a root found
+    // in a piece lies within it, within rounding) holds none nearer.
+    double nearest = std::numeric_limits<double>::infinity();
+    const auto note = [&](int from) {
+        for (int j = from; j < n; ++j)
+            if (ks[j] > nearest_beyond && ks[j] < nearest) nearest = ks[j];
+    };
+    note(0);
     for (int i = 1; i < cnt; ++i) {
+        if (nearest < dists[i - 1] * (1 - 1e-9) - 1e-12) break;
+        const int before = n;
         const glm::dvec3 p1 = o + dists[i] * d;
         const double v1 = search.f(p1);
         if (std::fabs(v1) < kZero) {
@@ -221,6 +231,7 @@ int superellipsoid_hits(const SuperellipsoidShape& s, const glm::dvec3& o, const
         }
         v0 = v1;
         p0 = p1;
+        note(before);
     }
     return n;
 }
@@ -231,7 +242,7 @@ bool intersect(const SuperellipsoidShape& s, const LocalRay& r, double tmin, dou
     const double len = glm::length(r.d);
     if (!(len > 0) || !std::isfinite(len)) return false;
     double ks[kMaxSuperellipsoidHits];
-    const int n = superellipsoid_hits(s, r.o, r.d / len, len, ks);
+    const int n = superellipsoid_hits(s, r.o, r.d / len, len, ks, tmin * len);
     double best = tmax;
     bool found = false;
     for (int i = 0; i < n; ++i) {

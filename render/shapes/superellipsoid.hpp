@@ -2,6 +2,7 @@
 // as POV-Ray finds it: the ray cut at the box and at the nine planes through the axes and
 // diagonals, each piece searched for a sign change (or a grazing approach).
 #pragma once
+#include <limits>
 #include "render/shapes/shape.hpp"
 
 namespace lumen::render {
@@ -21,10 +22,13 @@ inline Aabb solid_bounds(const SuperellipsoidShape& s) { return bounds(s); }
 // The distance-like function: < 0 inside, 0 on the surface.
 double superellipsoid_value(const SuperellipsoidShape& s, const glm::dvec3& p);
 // Every hit POV-Ray reports along o + k d (d unit), as object-space distances k, in the order
-// found (ascending but for rounding); returns the count.
+// found (ascending but for rounding); returns the count. With `nearest_beyond` (a k), the
+// search may stop once the nearest hit beyond it is known: at the first piece that starts
+// past a hit found there (by more than rounding), since later pieces hold only later hits.
 constexpr int kMaxSuperellipsoidHits = 22;  // two per piece of the ray at most
 int superellipsoid_hits(const SuperellipsoidShape& s, const glm::dvec3& o, const glm::dvec3& d,
-                        double len, double* ks);
+                        double len, double* ks,
+                        double nearest_beyond = std::numeric_limits<double>::quiet_NaN());
 
 inline constexpr double kDepthSuperellipsoid = 1e-4;
 
