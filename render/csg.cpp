@@ -139,7 +139,8 @@ struct MemberRanges {
     double earliest = Aabb::inf, next_earliest = Aabb::inf;
     uint32_t latest_at = kMax, earliest_at = kMax;
     // The same over the finite boxes (and the missed ones) alone, for a member whose hits
-    // depend on the range its search is given (Node::range_sensitive).
+    // depend on the range its search is given (Node::range_sensitive; kept only where the
+    // intersection holds such a member).
     double latest_finite = -Aabb::inf, next_latest_finite = -Aabb::inf;
     double earliest_finite = Aabb::inf, next_earliest_finite = Aabb::inf;
     uint32_t latest_finite_at = kMax, earliest_finite_at = kMax;
@@ -171,7 +172,7 @@ struct MemberRanges {
             }
             keep_latest(enter[j], j, latest, next_latest, latest_at);
             keep_earliest(exit[j], j, earliest, next_earliest, earliest_at);
-            if (box.finite() || !(enter[j] < Aabb::inf)) {
+            if (n.range_sensitive && (box.finite() || !(enter[j] < Aabb::inf))) {
                 keep_latest(enter[j], j, latest_finite, next_latest_finite, latest_finite_at);
                 keep_earliest(exit[j], j, earliest_finite, next_earliest_finite,
                               earliest_finite_at);
